@@ -1,0 +1,35 @@
+# Every dependency is a Debian package; pipelines/install-deps.sh installs them.
+# A missing one stops the configuration here, naming the package to install.
+function(dewpoint_require package debian_package)
+  find_package(${package} ${ARGN} QUIET)
+  if(NOT ${package}_FOUND)
+    message(FATAL_ERROR "dewpoint: missing dependency ${package}; install the Debian package '${debian_package}' (or run pipelines/install-deps.sh)")
+  endif()
+endfunction()
+
+find_package(OpenMP QUIET)
+if(NOT OpenMP_CXX_FOUND)
+  message(FATAL_ERROR "dewpoint: the C++ compiler has no OpenMP support (needed by the CPU backend); install g++ from Debian")
+endif()
+
+# Header-only: needed by the simulator core too.
+dewpoint_require(Eigen3 libeigen3-dev NO_MODULE)
+dewpoint_require(nlohmann_json nlohmann-json3-dev)
+dewpoint_require(GTest libgtest-dev)
+
+if(NOT DEWPOINT_CORE_ONLY)
+  dewpoint_require(CLI11 libcli11-dev)
+  dewpoint_require(TBB libtbb-dev)
+  dewpoint_require(assimp libassimp-dev)
+  dewpoint_require(embree libembree-dev 3)
+  dewpoint_require(OpenImageIO libopenimageio-dev)
+  dewpoint_require(OpenEXR libopenexr-dev)
+  dewpoint_require(CGAL libcgal-dev)
+  dewpoint_require(benchmark libbenchmark-dev)
+  list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB)
+  dewpoint_require(OpenVDB libopenvdb-dev)
+  find_program(DEWPOINT_OIIOTOOL oiiotool)
+  if(NOT DEWPOINT_OIIOTOOL)
+    message(FATAL_ERROR "dewpoint: missing oiiotool; install the Debian package 'openimageio-tools'")
+  endif()
+endif()

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs dewpoint's build and run dependencies from Debian packages.
+# Idempotent: when everything is present it prints nothing and returns at once.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ make pkg-config
+  libeigen3-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
+  libtbb-dev libassimp-dev libembree-dev libopenimageio-dev openimageio-tools
+  libopenexr-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev
+)
+
+# The CPU backend compiles CCCL's Thrust with g++. It comes with the CUDA
+# toolkit (/usr/local/cuda); without one, Debian's own Thrust/CUB serve.
+if [ ! -f /usr/local/cuda/include/cccl/thrust/sort.h ] && [ -z "${CUDA_PATH:-}" ]; then
+  packages+=(libthrust-dev libcub-dev)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps: missing packages: ${missing[*]}; run this script as root (apt-get needs it)" >&2
+  exit 1
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

@@ -1,0 +1,96 @@
+#pragma once
+// CPU backend: OpenMP threads for per-element kernels, CCCL Thrust (compiled by
+// the host compiler, OpenMP system) for sort and scan. Deterministic: kernels
+// gather and write only their own element, sorts are stable, sums use the
+// fixed blocked order of blocked_sum.h.
+#include <omp.h>
+#include <thrust/scan.h>
+#include <thrust/sort.h>
+#include <thrust/system/omp/execution_policy.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "backend/blocked_sum.h"
+
+namespace dp {
+
+class CpuExec {
+ public:
+  template <class T>
+  using Buffer = std::vector<T>;
+
+  explicit CpuExec(int threads) : threads_(threads > 0 ? threads : 1) { omp_set_num_threads(threads_); }
+
+  int threads() const { return threads_; }
+  static constexpr const char* name() { return "cpu"; }
+
+  template <class T>
+  static T* ptr(Buffer<T>& b) { return b.data(); }
+  template <class T>
+  static const T* ptr(const Buffer<T>& b) { return b.data(); }
+  template <class T>
+  static void upload(Buffer<T>& dst, const std::vector<T>& src) { dst = src; }
+  template <class T>
+  static std::vector<T> download(const Buffer<T>& src) { return src; }
+
+  // Calls f(i) for every i in [0, n).
+  template <class F>
+  void parallel_for(std::size_t n, const F& f) const {
+    const std::int64_t count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (std::int64_t i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
+  }
+
+  // Stable sort of (keys, values) by key.
+  template <class K, class V>
+  void sort_by_key(Buffer<K>& keys, Buffer<V>& values) const {
+    thrust::stable_sort_by_key(thrust::omp::par, keys.data(), keys.data() + keys.size(), values.data());
+  }
+
+  template <class T>
+  void exclusive_scan(const Buffer<T>& in, Buffer<T>& out) const {
+    out.resize(in.size());
+    thrust::exclusive_scan(thrust::omp::par, in.data(), in.data() + in.size(), out.data());
+  }
+
+  // Sum of f(i) over [0, n) in the blocked order (see blocked_sum.h).
+  template <class ValueAt>
+  double sum(std::size_t n, const ValueAt& f) const {
+    std::vector<double> partial(sum_block_count(n));
+    parallel_for(partial.size(), [&](std::size_t b) { partial[b] = sum_block(b, n, f); });
+    double s = 0.0;
+    for (double p : partial) s += p;
+    return s;
+  }
+
+  // Smallest i in [0, n) with pred(i), or n when there is none.
+  template <class Pred>
+  std::size_t find_first(std::size_t n, const Pred& pred) const {
+    std::size_t first = n;
+    const std::int64_t count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(min : first)
+    for (std::int64_t i = 0; i < count; ++i)
+      if (pred(static_cast<std::size_t>(i))) first = std::min(first, static_cast<std::size_t>(i));
+    return first;
+  }
+
+  // Largest f(i) over [0, n); `lowest` when n = 0.
+  template <class ValueAt>
+  float max(std::size_t n, const ValueAt& f, float lowest) const {
+    float m = lowest;
+    const std::int64_t count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : m)
+    for (std::int64_t i = 0; i < count; ++i) m = std::max(m, static_cast<float>(f(static_cast<std::size_t>(i))));
+    return m;
+  }
+
+  void synchronize() const {}
+
+ private:
+  int threads_;
+};
+
+}  // namespace dp

@@ -1,0 +1,97 @@
+#pragma once
+// Uniform grid neighbour search (Green 2009): cell size = support radius h,
+// particles sorted by linear cell index, each cell's range [begin, end) in
+// the sorted order. A query visits the 27 cells around a position.
+#include <cstdint>
+
+#include "backend/host_device.h"
+#include "math/vec3.h"
+
+namespace dp {
+
+struct UniformGrid {
+  Vec3 origin;
+  float cell_size = 1;
+  int nx = 1, ny = 1, nz = 1;
+
+  DP_HD std::uint32_t cell_count() const { return static_cast<std::uint32_t>(nx) * ny * nz; }
+
+  DP_HD int clamp_axis(float v, int n) const {
+    int c = static_cast<int>(floorf(v));
+    return c < 0 ? 0 : (c >= n ? n - 1 : c);
+  }
+  DP_HD void cell_of(Vec3 p, int& i, int& j, int& k) const {
+    i = clamp_axis((p.x - origin.x) / cell_size, nx);
+    j = clamp_axis((p.y - origin.y) / cell_size, ny);
+    k = clamp_axis((p.z - origin.z) / cell_size, nz);
+  }
+  DP_HD std::uint32_t linear(int i, int j, int k) const {
+    return (static_cast<std::uint32_t>(k) * ny + j) * nx + i;
+  }
+  DP_HD std::uint32_t key_of(Vec3 p) const {
+    int i, j, k;
+    cell_of(p, i, j, k);
+    return linear(i, j, k);
+  }
+};
+
+// The sorted view of one particle set in a grid.
+struct GridView {
+  UniformGrid grid;
+  const std::uint32_t* cell_begin;  // per cell, first sorted index
+  const std::uint32_t* cell_end;    // per cell, one past the last
+  const Vec3* position;             // sorted positions
+
+  // Calls f(j) for every particle j within the 27 cells around p.
+  template <class F>
+  DP_HD void for_each_near(Vec3 p, const F& f) const {
+    int ci, cj, ck;
+    grid.cell_of(p, ci, cj, ck);
+    for (int k = ck - 1; k <= ck + 1; ++k) {
+      if (k < 0 || k >= grid.nz) continue;
+      for (int j = cj - 1; j <= cj + 1; ++j) {
+        if (j < 0 || j >= grid.ny) continue;
+        for (int i = ci - 1; i <= ci + 1; ++i) {
+          if (i < 0 || i >= grid.nx) continue;
+          std::uint32_t c = grid.linear(i, j, k);
+          for (std::uint32_t n = cell_begin[c]; n < cell_end[c]; ++n) f(n);
+        }
+      }
+    }
+  }
+};
+
+// Kernels that build a GridView from particles; see ParticleGrid in
+// neighbor_search.h for the sequence.
+struct ComputeCellKeys {
+  UniformGrid grid;
+  const Vec3* position;
+  std::uint32_t* key;
+  std::uint32_t* index;
+  DP_HD void operator()(std::size_t i) const {
+    key[i] = grid.key_of(position[i]);
+    index[i] = static_cast<std::uint32_t>(i);
+  }
+};
+
+struct ClearCellRanges {
+  std::uint32_t* cell_begin;
+  std::uint32_t* cell_end;
+  DP_HD void operator()(std::size_t c) const { cell_begin[c] = 0; cell_end[c] = 0; }
+};
+
+// After sorting, the first and last particle of each run of equal keys mark
+// their cell's range; each cell entry has exactly one writer.
+struct FindCellRanges {
+  const std::uint32_t* sorted_key;
+  std::size_t n;
+  std::uint32_t* cell_begin;
+  std::uint32_t* cell_end;
+  DP_HD void operator()(std::size_t i) const {
+    std::uint32_t k = sorted_key[i];
+    if (i == 0 || sorted_key[i - 1] != k) cell_begin[k] = static_cast<std::uint32_t>(i);
+    if (i + 1 == n || sorted_key[i + 1] != k) cell_end[k] = static_cast<std::uint32_t>(i + 1);
+  }
+};
+
+}  // namespace dp

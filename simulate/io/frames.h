@@ -1,0 +1,44 @@
+#pragma once
+// The frames folder (docs/file-formats.md): particle PLYs per frame, rigid
+// particles once, and manifest.json describing them.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "simulation.h"
+
+namespace dp::io {
+
+// "particles.0007.ply" for kind "particles" and frame 7.
+std::string frame_file_name(const std::string& kind, int frame, const std::string& extension);
+
+void write_particle_frame(const std::filesystem::path& file, const ParticleSnapshot& particles, float particle_radius,
+                          const std::string& comment);
+void write_rigid_particles(const std::filesystem::path& file, const std::vector<Vec3>& position,
+                           const std::vector<float>& volume, const std::string& comment);
+
+struct FrameEntry {
+  int index = 0;
+  double time_s = 0;
+  std::int64_t step = 0;
+  std::size_t liquid_particles = 0;
+  std::string particles_file;  // relative to the frames folder
+};
+
+struct FramesManifest {
+  std::filesystem::path scene_file;
+  std::string scene_name;
+  double particle_spacing_m = 0;
+  double particle_radius_m = 0;
+  std::string rigid_particles_file;
+  std::vector<FrameEntry> frames;
+  nlohmann::json extra;  // generator, settings, the scene document
+};
+
+void write_manifest(const std::filesystem::path& frames_dir, const FramesManifest& manifest);
+// Throws std::runtime_error naming the file and key when it is not a manifest.
+FramesManifest read_manifest(const std::filesystem::path& frames_dir);
+
+}  // namespace dp::io

@@ -1,0 +1,198 @@
+#include "scene.h"
+
+#include <fstream>
+
+namespace dp::io {
+
+namespace {
+
+double positive(JsonObject& o, const std::string& key, double value) {
+  if (!(value > 0)) throw o.error(key, "expected a positive number, found " + std::to_string(value));
+  return value;
+}
+
+double kelvin_from_celsius(JsonObject& o, const std::string& key, double celsius) {
+  if (celsius < -kZeroCelsiusInKelvin) throw o.error(key, "temperature below absolute zero (" + std::to_string(celsius) + " °C)");
+  return celsius_to_kelvin(celsius);
+}
+
+Rgb colour(JsonObject& o, const std::string& key, Rgb fallback) {
+  Rgb c = o.vec3(key, fallback);
+  for (double v : c)
+    if (v < 0) throw o.error(key, "expected non-negative colour components");
+  return c;
+}
+
+bool inside(const Vec3d& p, const Vec3d& lo, const Vec3d& hi) {
+  for (int a = 0; a < 3; ++a)
+    if (p[a] < lo[a] || p[a] > hi[a]) return false;
+  return true;
+}
+
+LiquidSettings read_liquid(JsonObject o) {
+  LiquidSettings l;
+  l.rest_density_kg_m3 = positive(o, "rest_density_kg_m3", o.number("rest_density_kg_m3", l.rest_density_kg_m3));
+  l.speed_of_sound_m_s = positive(o, "speed_of_sound_m_s", o.number("speed_of_sound_m_s", l.speed_of_sound_m_s));
+  l.viscosity_alpha = o.number("viscosity_alpha", l.viscosity_alpha);
+  l.boundary_friction = o.number("boundary_friction", l.boundary_friction);
+  l.temperature_k = kelvin_from_celsius(o, "temperature_c", o.number("temperature_c", 20));
+  if (l.viscosity_alpha < 0) throw o.error("viscosity_alpha", "expected a non-negative number");
+  if (l.boundary_friction < 0) throw o.error("boundary_friction", "expected a non-negative number");
+  o.finish();
+  return l;
+}
+
+SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& scene_dir) {
+  SimulationSettings s;
+  JsonObject domain = o.object("domain");
+  s.domain_min_m = domain.vec3("min_m");
+  s.domain_max_m = domain.vec3("max_m");
+  for (int a = 0; a < 3; ++a)
+    if (!(s.domain_min_m[a] < s.domain_max_m[a])) throw domain.error("max_m", "every component must exceed min_m's");
+  domain.finish();
+
+  s.gravity_m_s2 = o.vec3("gravity_m_s2", s.gravity_m_s2);
+  s.particle_spacing_m = positive(o, "particle_spacing_m", o.number("particle_spacing_m"));
+  s.time_step_s = positive(o, "time_step_s", o.number("time_step_s"));
+  s.duration_s = positive(o, "duration_s", o.number("duration_s"));
+  s.frame_rate_hz = positive(o, "frame_rate_hz", o.number("frame_rate_hz", s.frame_rate_hz));
+  s.max_speed_m_s = positive(o, "max_speed_m_s", o.number("max_speed_m_s", s.max_speed_m_s));
+  s.liquid = read_liquid(o.object("liquid"));
+
+  // Weakly compressible SPH is stable for dt <= 0.4 (h/2) / c (CFL).
+  double max_dt = 0.4 * s.particle_spacing_m / s.liquid.speed_of_sound_m_s;
+  if (s.time_step_s > max_dt)
+    throw o.error("time_step_s", "expected at most " + std::to_string(max_dt) +
+                                     " s (CFL limit 0.4 * particle_spacing_m / liquid.speed_of_sound_m_s), found " +
+                                     std::to_string(s.time_step_s));
+
+  for (JsonObject b : o.objects("liquid_blocks")) {
+    LiquidBlock block;
+    block.min_m = b.vec3("min_m");
+    block.max_m = b.vec3("max_m");
+    block.velocity_m_s = b.vec3("velocity_m_s", block.velocity_m_s);
+    for (int a = 0; a < 3; ++a)
+      if (!(block.min_m[a] < block.max_m[a])) throw b.error("max_m", "every component must exceed min_m's");
+    if (!inside(block.min_m, s.domain_min_m, s.domain_max_m)) throw b.error("min_m", "outside the simulation domain");
+    if (!inside(block.max_m, s.domain_min_m, s.domain_max_m)) throw b.error("max_m", "outside the simulation domain");
+    b.finish();
+    s.liquid_blocks.push_back(block);
+  }
+
+  for (JsonObject r : o.objects("rigids")) {
+    RigidObject rigid;
+    rigid.name = r.string("name");
+    if (rigid.name.empty() || rigid.name == "liquid") throw r.error("name", "expected a non-empty name other than 'liquid'");
+    for (const auto& other : s.rigids)
+      if (other.name == rigid.name) throw r.error("name", "duplicate rigid name '" + rigid.name + "'");
+    std::filesystem::path mesh = r.string("mesh");
+    rigid.mesh = mesh.is_absolute() ? mesh : (scene_dir / mesh).lexically_normal();
+    if (!std::ifstream(rigid.mesh)) throw r.error("mesh", "cannot read mesh file " + rigid.mesh.string());
+    rigid.temperature_k = kelvin_from_celsius(r, "temperature_c", r.number("temperature_c", 20));
+    r.finish();
+    s.rigids.push_back(rigid);
+  }
+  o.finish();
+  return s;
+}
+
+MeshSettings read_mesh(std::optional<JsonObject> o) {
+  MeshSettings m;
+  if (!o) return m;
+  m.voxels_per_radius = positive(*o, "voxels_per_radius", o->number("voxels_per_radius", m.voxels_per_radius));
+  m.kernel_radius_factor = positive(*o, "kernel_radius_factor", o->number("kernel_radius_factor", m.kernel_radius_factor));
+  m.particle_radius_factor = positive(*o, "particle_radius_factor", o->number("particle_radius_factor", m.particle_radius_factor));
+  o->finish();
+  return m;
+}
+
+Material read_material(JsonObject o) {
+  Material m;
+  std::string type = o.string("type");
+  if (type == "diffuse") m.type = MaterialType::Diffuse;
+  else if (type == "dielectric") m.type = MaterialType::Dielectric;
+  else if (type == "conductor") m.type = MaterialType::Conductor;
+  else throw o.error("type", "expected one of diffuse, dielectric, conductor; found '" + type + "'");
+  m.albedo = colour(o, "albedo", m.albedo);
+  for (double v : m.albedo)
+    if (v > 1) throw o.error("albedo", "expected components in [0, 1]");
+  m.ior = positive(o, "ior", o.number("ior", m.ior));
+  m.absorption_per_m = colour(o, "absorption_per_m", m.absorption_per_m);
+  o.finish();
+  return m;
+}
+
+RenderSettings read_render(JsonObject o, const SimulationSettings& sim) {
+  RenderSettings r;
+  auto res = o.int2("resolution");
+  if (res[0] <= 0 || res[1] <= 0) throw o.error("resolution", "expected two positive integers");
+  r.width = static_cast<int>(res[0]);
+  r.height = static_cast<int>(res[1]);
+  r.spp = static_cast<int>(o.integer("spp", r.spp));
+  if (r.spp <= 0) throw o.error("spp", "expected a positive integer");
+  r.max_depth = static_cast<int>(o.integer("max_depth", r.max_depth));
+  if (r.max_depth <= 0) throw o.error("max_depth", "expected a positive integer");
+  std::int64_t seed = o.integer("seed", 1);
+  if (seed < 0) throw o.error("seed", "expected a non-negative integer");
+  r.seed = static_cast<std::uint64_t>(seed);
+  r.exposure_stops = o.number("exposure_stops", 0);
+
+  JsonObject cam = o.object("camera");
+  r.camera.position_m = cam.vec3("position_m");
+  r.camera.look_at_m = cam.vec3("look_at_m");
+  r.camera.up = cam.vec3("up", r.camera.up);
+  r.camera.fov_deg = cam.number("fov_deg", r.camera.fov_deg);
+  if (!(r.camera.fov_deg > 0 && r.camera.fov_deg < 180)) throw cam.error("fov_deg", "expected a number in (0, 180)");
+  cam.finish();
+
+  if (auto env = o.optional_object("environment")) {
+    r.environment.zenith = colour(*env, "zenith_rgb", r.environment.zenith);
+    r.environment.horizon = colour(*env, "horizon_rgb", r.environment.horizon);
+    r.environment.ground = colour(*env, "ground_rgb", r.environment.ground);
+    r.environment.intensity = env->number("intensity", 1);
+    if (r.environment.intensity < 0) throw env->error("intensity", "expected a non-negative number");
+    env->finish();
+  }
+
+  for (auto& [name, m] : o.entries("materials")) r.materials[name] = read_material(m);
+  r.liquid_material = o.string("liquid_material", r.liquid_material);
+  if (!r.materials.count(r.liquid_material)) throw o.error("liquid_material", "names no entry of render.materials ('" + r.liquid_material + "')");
+
+  // Every rigid of the simulation appears in render.objects with a material.
+  for (auto& [name, obj] : o.entries("objects")) {
+    bool known = false;
+    for (const auto& rigid : sim.rigids) known = known || rigid.name == name;
+    if (!known) throw obj.error("material", "render.objects." + name + " names no rigid of simulation.rigids");
+    std::string material = obj.string("material");
+    if (!r.materials.count(material)) throw obj.error("material", "names no entry of render.materials ('" + material + "')");
+    obj.finish();
+    r.rigid_material[name] = material;
+  }
+  for (const auto& rigid : sim.rigids)
+    if (!r.rigid_material.count(rigid.name)) throw o.error("objects", "has no entry for rigid '" + rigid.name + "'");
+  o.finish();
+  return r;
+}
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& file) {
+  Scene scene;
+  scene.file = std::filesystem::absolute(file).lexically_normal();
+  std::ifstream in(scene.file);
+  if (!in) throw SceneError(file.string() + ": cannot open scene file");
+  try {
+    scene.document = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw SceneError(file.string() + ": not valid JSON: " + e.what());
+  }
+  JsonObject top(scene.document, "", file);
+  scene.name = top.string("name", scene.file.stem().string());
+  scene.simulation = read_simulation(top.object("simulation"), scene.file.parent_path());
+  scene.mesh = read_mesh(top.optional_object("mesh"));
+  scene.render = read_render(top.object("render"), scene.simulation);
+  top.finish();
+  return scene;
+}
+
+}  // namespace dp::io

@@ -1,0 +1,109 @@
+#pragma once
+// A shot, as the scene file describes it for all three stages
+// (docs/scene-format.md). Loading validates everything before any work.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "json_reader.h"
+
+namespace dp::io {
+
+using Vec3d = std::array<double, 3>;
+using Rgb = std::array<double, 3>;
+
+inline constexpr double kZeroCelsiusInKelvin = 273.15;  // the one place Celsius meets kelvin
+inline double celsius_to_kelvin(double c) { return c + kZeroCelsiusInKelvin; }
+
+struct LiquidBlock {
+  Vec3d min_m, max_m;
+  Vec3d velocity_m_s{0, 0, 0};
+};
+
+struct RigidObject {
+  std::string name;
+  std::filesystem::path mesh;  // resolved against the scene file's folder
+  double temperature_k = 293.15;
+};
+
+struct LiquidSettings {
+  double rest_density_kg_m3 = 1000;
+  double speed_of_sound_m_s = 20;
+  double viscosity_alpha = 0.02;
+  double boundary_friction = 0.02;
+  double temperature_k = 293.15;
+};
+
+struct SimulationSettings {
+  Vec3d domain_min_m, domain_max_m;
+  Vec3d gravity_m_s2{0, -9.81, 0};
+  double particle_spacing_m = 0.01;
+  double time_step_s = 1e-4;
+  double duration_s = 1;
+  double frame_rate_hz = 24;
+  double max_speed_m_s = 50;
+  LiquidSettings liquid;
+  std::vector<LiquidBlock> liquid_blocks;
+  std::vector<RigidObject> rigids;
+};
+
+struct MeshSettings {
+  double voxels_per_radius = 2;   // voxel size = particle radius / this
+  double kernel_radius_factor = 2;  // Zhu-Bridson kernel radius R = factor * particle spacing
+  double particle_radius_factor = 0.5;  // r_i = factor * particle spacing
+};
+
+enum class MaterialType { Diffuse, Dielectric, Conductor };
+
+struct Material {
+  MaterialType type = MaterialType::Diffuse;
+  Rgb albedo{0.8, 0.8, 0.8};        // diffuse reflectance, or conductor's colour
+  double ior = 1.33;                // dielectric
+  Rgb absorption_per_m{0, 0, 0};    // Beer-Lambert inside a dielectric
+};
+
+struct CameraSettings {
+  Vec3d position_m{0, 1, 2};
+  Vec3d look_at_m{0, 0, 0};
+  Vec3d up{0, 1, 0};
+  double fov_deg = 40;
+};
+
+struct EnvironmentSettings {
+  Rgb zenith{0.55, 0.7, 1.0};  // sky colour overhead
+  Rgb horizon{1.0, 1.0, 1.0};  // at the horizon
+  Rgb ground{0.25, 0.22, 0.2};
+  double intensity = 1.0;
+};
+
+struct RenderSettings {
+  int width = 480, height = 270;
+  int spp = 32;
+  int max_depth = 12;
+  std::uint64_t seed = 1;
+  double exposure_stops = 0;
+  CameraSettings camera;
+  EnvironmentSettings environment;
+  std::string liquid_material = "water";
+  std::map<std::string, Material> materials;          // by name
+  std::map<std::string, std::string> rigid_material;  // rigid name -> material name
+};
+
+struct Scene {
+  std::filesystem::path file;  // absolute
+  std::string name;
+  nlohmann::json document;  // as read, recorded in outputs
+  SimulationSettings simulation;
+  MeshSettings mesh;
+  RenderSettings render;
+};
+
+// Parses and validates; throws SceneError naming file, key, expected and found.
+Scene load_scene(const std::filesystem::path& file);
+
+}  // namespace dp::io

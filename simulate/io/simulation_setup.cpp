@@ -1,0 +1,59 @@
+#include "simulation_setup.h"
+
+#include <cmath>
+
+#include "rigid/sample_surface.h"
+#include "triangle_mesh.h"
+
+namespace dp::io {
+
+namespace {
+Vec3 to_vec3(const Vec3d& v) { return Vec3{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])}; }
+}  // namespace
+
+std::vector<Vec3> fill_block(const LiquidBlock& block, double spacing) {
+  int n[3];
+  double offset[3];
+  for (int a = 0; a < 3; ++a) {
+    double extent = block.max_m[a] - block.min_m[a];
+    n[a] = std::max(1, static_cast<int>(std::floor(extent / spacing + 1e-9)));
+    offset[a] = block.min_m[a] + 0.5 * (extent - (n[a] - 1) * spacing);
+  }
+  std::vector<Vec3> points;
+  points.reserve(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i)
+        points.push_back(Vec3{static_cast<float>(offset[0] + i * spacing), static_cast<float>(offset[1] + j * spacing),
+                              static_cast<float>(offset[2] + k * spacing)});
+  return points;
+}
+
+SimulationSetup make_simulation_setup(const Scene& scene) {
+  const SimulationSettings& s = scene.simulation;
+  SimulationSetup setup;
+  setup.domain_min = to_vec3(s.domain_min_m);
+  setup.domain_max = to_vec3(s.domain_max_m);
+  setup.gravity = to_vec3(s.gravity_m_s2);
+  setup.particle_spacing = static_cast<float>(s.particle_spacing_m);
+  setup.time_step = static_cast<float>(s.time_step_s);
+  setup.max_speed = static_cast<float>(s.max_speed_m_s);
+  setup.liquid.rest_density = static_cast<float>(s.liquid.rest_density_kg_m3);
+  setup.liquid.speed_of_sound = static_cast<float>(s.liquid.speed_of_sound_m_s);
+  setup.liquid.viscosity_alpha = static_cast<float>(s.liquid.viscosity_alpha);
+  setup.liquid.boundary_friction = static_cast<float>(s.liquid.boundary_friction);
+  setup.liquid.temperature = static_cast<float>(s.liquid.temperature_k);
+  for (const LiquidBlock& block : s.liquid_blocks) {
+    std::vector<Vec3> points = fill_block(block, s.particle_spacing_m);
+    setup.liquid_position.insert(setup.liquid_position.end(), points.begin(), points.end());
+    setup.liquid_velocity.insert(setup.liquid_velocity.end(), points.size(), to_vec3(block.velocity_m_s));
+  }
+  for (const RigidObject& rigid : s.rigids) {
+    TriangleMesh mesh = load_triangle_mesh(rigid.mesh);
+    std::vector<Vec3> samples = sample_surface(mesh.positions, mesh.triangles, setup.particle_spacing);
+    setup.rigid_position.insert(setup.rigid_position.end(), samples.begin(), samples.end());
+  }
+  return setup;
+}
+
+}  // namespace dp::io
