@@ -1,0 +1,129 @@
+// dewpoint-simulate as users run it: conventions, bad input, frames.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "frames.h"
+#include "ply.h"
+#include "run_command.h"
+
+namespace fs = std::filesystem;
+
+namespace dp {
+namespace {
+
+const std::string kSimulate = DEWPOINT_SIMULATE;
+const fs::path kSource = DEWPOINT_SOURCE_DIR;
+
+class SimulateCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    work_ = fs::temp_directory_path() / ("dewpoint-simulate-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(work_);
+    fs::create_directories(work_ / "scenes");
+    fs::create_directories(work_ / "meshes");
+    fs::copy_file(kSource / "assets/meshes/tray.obj", work_ / "meshes/tray.obj");
+    std::ifstream in(kSource / "assets/scenes/demo.json");
+    doc_ = nlohmann::json::parse(in);
+    // A short, small run: a 6x6x6 block, a tenth of a second.
+    doc_["simulation"]["duration_s"] = 0.1;
+    doc_["simulation"]["frame_rate_hz"] = 20;
+    doc_["simulation"]["liquid_blocks"][0]["min_m"] = {-0.0375, 0.03, -0.0375};
+    doc_["simulation"]["liquid_blocks"][0]["max_m"] = {0.0375, 0.105, 0.0375};
+  }
+  fs::path write_scene() {
+    fs::path f = work_ / "scenes/shot.json";
+    std::ofstream(f) << doc_.dump(2);
+    return f;
+  }
+  test::CommandResult simulate(const std::string& args) {
+    return test::run_command(kSimulate + " " + args);
+  }
+  fs::path work_;
+  nlohmann::json doc_;
+};
+
+TEST_F(SimulateCli, HelpAndVersion) {
+  auto help = simulate("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.output.find("--device"), std::string::npos);
+  auto version = simulate("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_NE(version.output.find("dewpoint-simulate 0."), std::string::npos);
+}
+
+TEST_F(SimulateCli, WritesFramesAndManifest) {
+  fs::path scene = write_scene();
+  auto r = simulate(scene.string() + " -o " + (work_ / "out").string() + " --quiet --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  io::FramesManifest m = io::read_manifest(work_ / "out/frames");
+  ASSERT_EQ(m.frames.size(), 3u);  // t = 0, 0.05, 0.1
+  EXPECT_NEAR(m.frames[2].time_s, 0.1, 1e-6);
+  EXPECT_EQ(m.scene_file, fs::absolute(scene).lexically_normal());
+  io::PlyData p = io::read_ply(work_ / "out/frames" / m.frames[2].particles_file);
+  EXPECT_EQ(p.vertex_count, 216u);
+  for (const char* name : {"x", "y", "z", "vx", "vy", "vz", "weight", "radius", "temperature", "density", "pressure", "id"})
+    EXPECT_NE(p.find(name), nullptr) << name;
+  // Falling liquid: after 0.1 s every particle has moved down.
+  io::PlyData p0 = io::read_ply(work_ / "out/frames" / m.frames[0].particles_file);
+  double mean0 = 0, mean2 = 0;
+  for (double y : p0.find("y")->values) mean0 += y / 216;
+  for (double y : p.find("y")->values) mean2 += y / 216;
+  EXPECT_LT(mean2, mean0);
+  EXPECT_TRUE(fs::exists(work_ / "out/frames/rigid_particles.ply"));
+}
+
+TEST_F(SimulateCli, FrameRangeWritesOnlyThoseFrames) {
+  fs::path scene = write_scene();
+  auto r = simulate(scene.string() + " -o " + (work_ / "out").string() + " --quiet --frames 1-2");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_FALSE(fs::exists(work_ / "out/frames/particles.0000.ply"));
+  EXPECT_TRUE(fs::exists(work_ / "out/frames/particles.0001.ply"));
+  EXPECT_TRUE(fs::exists(work_ / "out/frames/particles.0002.ply"));
+}
+
+void expect_rejected(const test::CommandResult& r, const fs::path& out, const std::vector<std::string>& fragments) {
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  for (const auto& f : fragments) EXPECT_NE(r.output.find(f), std::string::npos) << "missing '" << f << "' in: " << r.output;
+  EXPECT_FALSE(fs::exists(out)) << "output was written for bad input";
+}
+
+TEST_F(SimulateCli, UnknownKeyIsRejectedBeforeAnyOutput) {
+  doc_["simulation"]["liquid"]["colour"] = "blue";
+  fs::path scene = write_scene();
+  expect_rejected(simulate(scene.string() + " -o " + (work_ / "out").string()), work_ / "out",
+                  {"shot.json", "simulation.liquid.colour", "unknown key"});
+}
+
+TEST_F(SimulateCli, WrongTypeIsRejectedBeforeAnyOutput) {
+  doc_["render"]["spp"] = 1.5;
+  fs::path scene = write_scene();
+  expect_rejected(simulate(scene.string() + " -o " + (work_ / "out").string()), work_ / "out",
+                  {"shot.json", "render.spp", "expected an integer, found a number"});
+}
+
+TEST_F(SimulateCli, MissingMeshIsRejectedBeforeAnyOutput) {
+  doc_["simulation"]["rigids"][0]["mesh"] = "../meshes/gone.obj";
+  fs::path scene = write_scene();
+  expect_rejected(simulate(scene.string() + " -o " + (work_ / "out").string()), work_ / "out",
+                  {"shot.json", "simulation.rigids[0].mesh", "gone.obj"});
+}
+
+TEST_F(SimulateCli, CudaWithoutGpuIsAClearError) {
+  std::string why;
+  if (cuda_device_count(&why) > 0) GTEST_SKIP() << "a GPU is present";
+  fs::path scene = write_scene();
+  auto r = simulate(scene.string() + " -o " + (work_ / "out").string() + " --device cuda");
+  expect_rejected(r, work_ / "out", {"--device cuda"});
+}
+
+TEST_F(SimulateCli, MissingSceneFile) {
+  auto r = simulate((work_ / "nothing.json").string() + " -o " + (work_ / "out").string());
+  expect_rejected(r, work_ / "out", {"nothing.json", "cannot open"});
+}
+
+}  // namespace
+}  // namespace dp

@@ -1,0 +1,124 @@
+// Scene validation: every error names the file and the key, with what was
+// expected and what was found.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "scene.h"
+
+namespace fs = std::filesystem;
+
+namespace dp::io {
+namespace {
+
+const fs::path kDemo = fs::path(DEWPOINT_SOURCE_DIR) / "assets/scenes/demo.json";
+
+nlohmann::json demo_document() {
+  std::ifstream in(kDemo);
+  return nlohmann::json::parse(in);
+}
+
+// Writes the document beside the demo scene so relative mesh paths resolve.
+fs::path write_scene(const nlohmann::json& doc, const std::string& name) {
+  fs::path dir = fs::temp_directory_path() / "dewpoint-scene-test" / "scenes";
+  fs::create_directories(dir);
+  fs::create_directories(dir.parent_path() / "meshes");
+  fs::copy_file(fs::path(DEWPOINT_SOURCE_DIR) / "assets/meshes/tray.obj", dir.parent_path() / "meshes/tray.obj",
+                fs::copy_options::overwrite_existing);
+  fs::path file = dir / name;
+  std::ofstream(file) << doc.dump(2);
+  return file;
+}
+
+std::string error_of(const nlohmann::json& doc, const std::string& name) {
+  fs::path file = write_scene(doc, name);
+  try {
+    load_scene(file);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Scene, DemoLoads) {
+  Scene s = load_scene(kDemo);
+  EXPECT_EQ(s.name, "demo");
+  EXPECT_EQ(s.simulation.rigids.size(), 1u);
+  EXPECT_TRUE(fs::exists(s.simulation.rigids[0].mesh));
+  EXPECT_DOUBLE_EQ(s.simulation.liquid.temperature_k, 293.15);
+  EXPECT_EQ(s.render.rigid_material.at("tray"), "tray");
+}
+
+TEST(Scene, UnknownKeyIsNamedWithItsPath) {
+  auto doc = demo_document();
+  doc["simulation"]["liquid"]["viscosity"] = 0.1;
+  std::string e = error_of(doc, "unknown_key.json");
+  EXPECT_NE(e.find("unknown_key.json"), std::string::npos) << e;
+  EXPECT_NE(e.find("simulation.liquid.viscosity: unknown key"), std::string::npos) << e;
+}
+
+TEST(Scene, WrongTypeNamesExpectedAndFound) {
+  auto doc = demo_document();
+  doc["simulation"]["time_step_s"] = "fast";
+  std::string e = error_of(doc, "wrong_type.json");
+  EXPECT_NE(e.find("simulation.time_step_s: expected a number, found a string"), std::string::npos) << e;
+}
+
+TEST(Scene, MissingMeshNamesTheKeyAndTheFile) {
+  auto doc = demo_document();
+  doc["simulation"]["rigids"][0]["mesh"] = "../meshes/no_such_tray.obj";
+  std::string e = error_of(doc, "missing_mesh.json");
+  EXPECT_NE(e.find("simulation.rigids[0].mesh"), std::string::npos) << e;
+  EXPECT_NE(e.find("no_such_tray.obj"), std::string::npos) << e;
+}
+
+TEST(Scene, MissingRequiredKey) {
+  auto doc = demo_document();
+  doc["simulation"].erase("particle_spacing_m");
+  std::string e = error_of(doc, "missing_key.json");
+  EXPECT_NE(e.find("simulation.particle_spacing_m: missing required key"), std::string::npos) << e;
+}
+
+TEST(Scene, TimeStepAboveCflLimitIsRejected) {
+  auto doc = demo_document();
+  doc["simulation"]["time_step_s"] = 0.01;
+  std::string e = error_of(doc, "cfl.json");
+  EXPECT_NE(e.find("simulation.time_step_s: expected at most"), std::string::npos) << e;
+}
+
+TEST(Scene, TemperatureBelowAbsoluteZeroIsRejected) {
+  auto doc = demo_document();
+  doc["simulation"]["liquid"]["temperature_c"] = -300;
+  std::string e = error_of(doc, "cold.json");
+  EXPECT_NE(e.find("simulation.liquid.temperature_c: temperature below absolute zero"), std::string::npos) << e;
+}
+
+TEST(Scene, LiquidOutsideTheDomainIsRejected) {
+  auto doc = demo_document();
+  doc["simulation"]["liquid_blocks"][0]["max_m"] = {0.1, 0.9, 0.1};
+  std::string e = error_of(doc, "outside.json");
+  EXPECT_NE(e.find("simulation.liquid_blocks[0].max_m: outside the simulation domain"), std::string::npos) << e;
+}
+
+TEST(Scene, RigidWithoutRenderMaterialIsRejected) {
+  auto doc = demo_document();
+  doc["render"]["objects"].erase("tray");
+  std::string e = error_of(doc, "no_material.json");
+  EXPECT_NE(e.find("render.objects: has no entry for rigid 'tray'"), std::string::npos) << e;
+}
+
+TEST(Scene, InvalidJsonNamesTheFile) {
+  fs::path file = fs::temp_directory_path() / "dewpoint-scene-test" / "broken.json";
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << "{ \"name\": ";
+  try {
+    load_scene(file);
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.json: not valid JSON"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace dp::io
