@@ -57,9 +57,16 @@ struct ComputeDensityAndPressure {
   DP_HD void operator()(std::size_t i) const {
     Vec3 xi = liquid.position[i];
     float rho = 0.0f;
-    liquid.for_each_near(xi, [&](std::uint32_t j) { rho += p.particle_mass * p.kernel.W(length(xi - liquid.position[j])); });
+    const float h2 = p.kernel.h * p.kernel.h;
+    // Most of the 27 cells' particles lie outside the support: reject them
+    // on the squared distance before the square root.
+    liquid.for_each_near(xi, [&](std::uint32_t j) {
+      float r2 = length_squared(xi - liquid.position[j]);
+      if (r2 < h2) rho += p.particle_mass * p.kernel.W(sqrtf(r2));
+    });
     rigid.for_each_near(xi, [&](std::uint32_t b) {
-      rho += p.rest_density * rigid_volume[b] * p.kernel.W(length(xi - rigid.position[b]));
+      float r2 = length_squared(xi - rigid.position[b]);
+      if (r2 < h2) rho += p.rest_density * rigid_volume[b] * p.kernel.W(sqrtf(r2));
     });
     density[i] = rho;
     pressure[i] = tait_pressure(rho, p.rest_density, p.stiffness);
@@ -90,10 +97,11 @@ struct ComputeAcceleration {
     Vec3 xi = liquid.position[i], vi = velocity[i];
     float rhoi = density[i], pi_rho2 = pressure[i] / (rhoi * rhoi);
     float hs = 0.5f * p.kernel.h;  // smoothing length
+    const float h2 = p.kernel.h * p.kernel.h;
     Vec3 a = p.gravity;
     liquid.for_each_near(xi, [&](std::uint32_t j) {
-      if (j == i) return;
       Vec3 xij = xi - liquid.position[j];
+      if (j == i || length_squared(xij) >= h2) return;
       Vec3 grad = p.kernel.gradW(xij);
       float pj_rho2 = pressure[j] / (density[j] * density[j]);
       float visc = artificial_viscosity(xij, vi - velocity[j], p.viscosity_alpha, hs, p.speed_of_sound,
@@ -102,6 +110,7 @@ struct ComputeAcceleration {
     });
     rigid.for_each_near(xi, [&](std::uint32_t b) {
       Vec3 xib = xi - rigid.position[b];
+      if (length_squared(xib) >= h2) return;
       Vec3 grad = p.kernel.gradW(xib);
       float psi = p.rest_density * rigid_volume[b];
       float visc = artificial_viscosity(xib, vi, p.boundary_friction, hs, p.speed_of_sound, rhoi);
