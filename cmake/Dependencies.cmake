@@ -12,10 +12,29 @@ if(NOT OpenMP_CXX_FOUND)
   message(FATAL_ERROR "dewpoint: the C++ compiler has no OpenMP support (needed by the CPU backend); install g++ from Debian")
 endif()
 
-# Header-only: needed by the simulator core too.
-dewpoint_require(Eigen3 libeigen3-dev NO_MODULE)
-dewpoint_require(nlohmann_json nlohmann-json3-dev)
-dewpoint_require(GTest libgtest-dev)
+# GoogleTest. A machine without Debian packages (the lent GPU machines) builds
+# it from its source folder, carried along: -DDEWPOINT_GTEST_SOURCE=DIR
+# (Debian's googletest package installs one at /usr/src/googletest).
+set(DEWPOINT_GTEST_SOURCE "" CACHE PATH "GoogleTest source folder, used where no installed GTest is found")
+find_package(GTest QUIET)
+if(NOT GTest_FOUND)
+  if(DEWPOINT_GTEST_SOURCE AND EXISTS "${DEWPOINT_GTEST_SOURCE}/CMakeLists.txt")
+    set(INSTALL_GTEST OFF CACHE BOOL "" FORCE)
+    set(BUILD_GMOCK OFF CACHE BOOL "" FORCE)
+    add_subdirectory(${DEWPOINT_GTEST_SOURCE} ${CMAKE_BINARY_DIR}/googletest EXCLUDE_FROM_ALL)
+    if(NOT TARGET GTest::gtest)  # googletest >= 1.11 defines these itself
+      add_library(GTest::gtest ALIAS gtest)
+      add_library(GTest::gtest_main ALIAS gtest_main)
+    endif()
+  else()
+    message(FATAL_ERROR "dewpoint: missing dependency GTest; install the Debian package 'libgtest-dev' (or pass -DDEWPOINT_GTEST_SOURCE=<googletest source folder>)")
+  endif()
+endif()
+
+if(NOT DEWPOINT_CORE_ONLY)
+  dewpoint_require(Eigen3 libeigen3-dev NO_MODULE)
+  dewpoint_require(nlohmann_json nlohmann-json3-dev)
+endif()
 
 if(NOT DEWPOINT_CORE_ONLY)
   dewpoint_require(CLI11 libcli11-dev)
