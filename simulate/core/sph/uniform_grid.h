@@ -35,27 +35,30 @@ struct UniformGrid {
   }
 };
 
-// The sorted view of one particle set in a grid.
+// The sorted view of one particle set in a grid. Every cell, empty or not,
+// has its range [cell_begin[c], cell_end[c]) in the sorted order, so the
+// three cells of a row along x (consecutive linear indices) form one
+// contiguous range.
 struct GridView {
   UniformGrid grid;
   const std::uint32_t* cell_begin;  // per cell, first sorted index
   const std::uint32_t* cell_end;    // per cell, one past the last
   const Vec3* position;             // sorted positions
 
-  // Calls f(j) for every particle j within the 27 cells around p.
+  // Calls f(j) for every particle j within the 27 cells around p, as nine
+  // contiguous runs (one per row of three cells along x).
   template <class F>
   DP_HD void for_each_near(Vec3 p, const F& f) const {
     int ci, cj, ck;
     grid.cell_of(p, ci, cj, ck);
+    const int i0 = ci > 0 ? ci - 1 : 0;
+    const int i1 = ci + 1 < grid.nx ? ci + 1 : grid.nx - 1;
     for (int k = ck - 1; k <= ck + 1; ++k) {
       if (k < 0 || k >= grid.nz) continue;
       for (int j = cj - 1; j <= cj + 1; ++j) {
         if (j < 0 || j >= grid.ny) continue;
-        for (int i = ci - 1; i <= ci + 1; ++i) {
-          if (i < 0 || i >= grid.nx) continue;
-          std::uint32_t c = grid.linear(i, j, k);
-          for (std::uint32_t n = cell_begin[c]; n < cell_end[c]; ++n) f(n);
-        }
+        const std::uint32_t end = cell_end[grid.linear(i1, j, k)];
+        for (std::uint32_t n = cell_begin[grid.linear(i0, j, k)]; n < end; ++n) f(n);
       }
     }
   }
@@ -74,24 +77,34 @@ struct ComputeCellKeys {
   }
 };
 
-struct ClearCellRanges {
-  std::uint32_t* cell_begin;
-  std::uint32_t* cell_end;
-  DP_HD void operator()(std::size_t c) const { cell_begin[c] = 0; cell_end[c] = 0; }
-};
-
-// After sorting, the first and last particle of each run of equal keys mark
-// their cell's range; each cell entry has exactly one writer.
-struct FindCellRanges {
+// After sorting, the last particle of each run of equal keys knows its
+// cell's count; each cell entry has exactly one writer.
+struct CountPerCell {
   const std::uint32_t* sorted_key;
   std::size_t n;
-  std::uint32_t* cell_begin;
-  std::uint32_t* cell_end;
+  std::uint32_t* cell_count;
   DP_HD void operator()(std::size_t i) const {
     std::uint32_t k = sorted_key[i];
-    if (i == 0 || sorted_key[i - 1] != k) cell_begin[k] = static_cast<std::uint32_t>(i);
-    if (i + 1 == n || sorted_key[i + 1] != k) cell_end[k] = static_cast<std::uint32_t>(i + 1);
+    if (i + 1 == n || sorted_key[i + 1] != k) {
+      std::size_t first = i;
+      while (first > 0 && sorted_key[first - 1] == k) --first;
+      cell_count[k] = static_cast<std::uint32_t>(i + 1 - first);
+    }
   }
+};
+
+struct ClearCounts {
+  std::uint32_t* cell_count;
+  DP_HD void operator()(std::size_t c) const { cell_count[c] = 0; }
+};
+
+// cell_end = cell_begin + count, where cell_begin is the exclusive scan of
+// the counts.
+struct CellEnds {
+  const std::uint32_t* cell_begin;
+  const std::uint32_t* cell_count;
+  std::uint32_t* cell_end;
+  DP_HD void operator()(std::size_t c) const { cell_end[c] = cell_begin[c] + cell_count[c]; }
 };
 
 }  // namespace dp
