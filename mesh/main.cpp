@@ -1,0 +1,71 @@
+// dewpoint-mesh: turns a frames folder's liquid particles into one surface
+// mesh per frame.
+#include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
+
+#include <iostream>
+#include <memory>
+
+#include "cli_common.h"
+#include "dewpoint/version.h"
+#include "mesh_frames.h"
+
+namespace {
+
+struct Options {
+  std::string frames_dir, out_dir, frames;
+  double voxel_size = 0, voxels_per_radius = 0;
+  int threads = 0;
+  bool quiet = false;
+};
+
+int run(const Options& opt) {
+  dp::mesh::MeshFramesOptions job;
+  job.frames_dir = opt.frames_dir;
+  job.out_dir = opt.out_dir;
+  job.range = opt.frames.empty() ? dp::io::FrameRange{} : dp::io::parse_frame_range(opt.frames);
+  job.voxel_size = opt.voxel_size;
+  job.voxels_per_radius = opt.voxels_per_radius;
+  job.quiet = opt.quiet;
+  // The limit lives as long as this object: for the whole run.
+  std::unique_ptr<tbb::global_control> limit;
+  if (opt.threads > 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, opt.threads);
+  job.threads = static_cast<int>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  dp::mesh::mesh_frames(job);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"dewpoint-mesh: meshes the liquid surface of each frame of a dewpoint-simulate frames folder"};
+  app.set_version_flag("--version", std::string("dewpoint-mesh ") + dp::kVersion);
+  Options opt;
+  app.add_option("frames", opt.frames_dir, "frames folder (with manifest.json) written by dewpoint-simulate")->required();
+  app.add_option("-o,--output", opt.out_dir, "output folder for liquid.NNNN.ply and liquid.NNNN.json")->required();
+  app.add_option("--frames", opt.frames, "frames to mesh, A-B (inclusive), A- or A");
+  auto* voxel = app.add_option("--voxel-size", opt.voxel_size, "voxel size in metres")->check(CLI::PositiveNumber);
+  app.add_option("--voxels-per-radius", opt.voxels_per_radius,
+                 "voxels per particle radius (default: the scene's mesh.voxels_per_radius)")
+      ->check(CLI::PositiveNumber)
+      ->excludes(voxel);
+  app.add_option("--threads", opt.threads, "CPU threads (0: all)")->check(CLI::Range(0, 4096));
+  app.add_flag("--quiet", opt.quiet, "no progress output");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version end parsing too, successfully; a bad command
+    // line is bad input like any other: one line, exit code 2
+    // (docs/architecture.md).
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "dewpoint-mesh: " << e.what() << " (see --help)\n";
+    return 2;
+  }
+  try {
+    return run(opt);
+  } catch (const std::exception& e) {
+    std::cerr << "dewpoint-mesh: " << e.what() << "\n";
+    return 2;
+  }
+}

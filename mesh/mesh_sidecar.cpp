@@ -1,0 +1,49 @@
+#include "mesh_sidecar.h"
+
+#include "atomic_file.h"
+#include "dewpoint/version.h"
+#include "mesh_measures.h"
+
+namespace dp::mesh {
+
+namespace {
+constexpr int kSidecarVersion = 1;
+}
+
+nlohmann::json mesh_sidecar_json(const MeshSidecar& s, const LiquidSurface& surface) {
+  const GridBox& g = surface.grid;
+  const double total = s.read_seconds + surface.field_seconds + surface.marching_cubes_seconds + s.write_seconds;
+  return {
+      {"format", "dewpoint-mesh-sidecar"},
+      {"format_version", kSidecarVersion},
+      {"generator", std::string("dewpoint-mesh ") + kVersion},
+      {"frame", s.frame},
+      {"time_s", s.time_s},
+      {"source_frames_dir", s.frames_dir.string()},
+      {"source_particles_file", s.particles_file},
+      {"scene_file", s.scene_file.string()},
+      {"mesh_file", s.mesh_file},
+      {"liquid_particles", s.liquid_particles},
+      {"particle_radius_m", s.parameters.particle_radius},
+      {"kernel_radius_m", s.parameters.kernel_radius},
+      {"voxel_size_m", s.parameters.voxel_size},
+      {"grid", {{"origin_m", {g.origin.x, g.origin.y, g.origin.z}}, {"nodes", g.nodes}}},
+      {"vertices", surface.mesh.position.size()},
+      {"triangles", surface.mesh.triangles.size()},
+      {"enclosed_volume_m3", enclosed_volume(surface.mesh)},
+      {"surface_area_m2", surface_area(surface.mesh)},
+      {"threads", s.threads},
+      {"seconds", total},
+      {"seconds_by_stage",
+       {{"read", s.read_seconds},
+        {"field", surface.field_seconds},
+        {"marching_cubes", surface.marching_cubes_seconds},
+        {"write", s.write_seconds}}},
+  };
+}
+
+void write_mesh_sidecar(const std::filesystem::path& file, const nlohmann::json& sidecar) {
+  io::write_atomically(file, [&](std::ostream& out) { out << sidecar.dump(2) << "\n"; });
+}
+
+}  // namespace dp::mesh

@@ -1,0 +1,31 @@
+#pragma once
+// The JSON written beside each liquid mesh (docs/file-formats.md): what was
+// meshed, with which parameters, and what came out. Written last, so its
+// presence says the frame's mesh is complete.
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "liquid_surface.h"
+
+namespace dp::mesh {
+
+struct MeshSidecar {
+  int frame = 0;
+  double time_s = 0;
+  std::filesystem::path frames_dir;
+  std::string particles_file, mesh_file;
+  std::filesystem::path scene_file;
+  std::size_t liquid_particles = 0;
+  SurfaceParameters parameters;
+  int threads = 0;
+  double read_seconds = 0, write_seconds = 0;
+};
+
+nlohmann::json mesh_sidecar_json(const MeshSidecar& sidecar, const LiquidSurface& surface);
+
+// Written atomically.
+void write_mesh_sidecar(const std::filesystem::path& file, const nlohmann::json& sidecar);
+
+}  // namespace dp::mesh

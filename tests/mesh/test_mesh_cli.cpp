@@ -1,0 +1,194 @@
+// dewpoint-mesh as a user runs it: on a tiny frames folder made here, and on
+// broken ones.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "dewpoint/version.h"
+#include "frames.h"
+#include "ply.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMesher = fs::path(DEWPOINT_BINARY_DIR) / "mesh" / "dewpoint-mesh";
+const fs::path kScene = fs::path(DEWPOINT_SOURCE_DIR) / "assets" / "scenes" / "demo.json";
+constexpr double kSpacing = 0.0125;  // the demo scene's
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct MesherRun {
+  int exit_code;
+  std::string out, err;
+};
+
+class mesh_Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("dewpoint-mesh-test-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(frames_dir());
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+
+  fs::path frames_dir() const { return dir_ / "frames"; }
+  fs::path out_dir() const { return dir_ / "meshes"; }
+
+  // A 4x4x4 block of liquid particles at the demo's spacing as frame 0.
+  void write_tiny_frames() {
+    dp::io::PlyData ply;
+    std::vector<double> x, y, z, w;
+    for (int k = 0; k < 4; ++k)
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+          x.push_back(i * kSpacing);
+          y.push_back(0.05 + j * kSpacing);
+          z.push_back(k * kSpacing);
+          w.push_back(1.0);
+        }
+    ply.vertex_count = x.size();
+    ply.add("x", dp::io::PlyType::Float32, x);
+    ply.add("y", dp::io::PlyType::Float32, y);
+    ply.add("z", dp::io::PlyType::Float32, z);
+    ply.add("weight", dp::io::PlyType::Float32, w);
+    dp::io::write_ply(frames_dir() / dp::io::frame_file_name("particles", 0, "ply"), ply);
+
+    dp::io::FramesManifest manifest;
+    manifest.scene_file = kScene;
+    manifest.scene_name = "tiny";
+    manifest.particle_spacing_m = kSpacing;
+    manifest.particle_radius_m = 0.5 * kSpacing;
+    manifest.rigid_particles_file = "rigid_particles.ply";
+    dp::io::FrameEntry entry;
+    entry.index = 0;
+    entry.liquid_particles = x.size();
+    entry.particles_file = dp::io::frame_file_name("particles", 0, "ply");
+    manifest.frames.push_back(entry);
+    dp::io::write_manifest(frames_dir(), manifest);
+  }
+
+  MesherRun mesher(const std::string& arguments) const {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = "'" + kMesher.string() + "' " + arguments + " > '" + out.string() + "' 2> '" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
+  }
+
+  std::string quoted(const fs::path& p) const { return "'" + p.string() + "'"; }
+
+  fs::path dir_;
+};
+
+TEST_F(mesh_Cli, MeshesATinyFramesFolder) {
+  write_tiny_frames();
+  const MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()) + " --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "") << "--quiet still printed";
+
+  const dp::io::PlyData mesh = dp::io::read_ply(out_dir() / "liquid.0000.ply");
+  EXPECT_GT(mesh.vertex_count, 0u);
+  EXPECT_FALSE(mesh.faces.empty());
+  for (const char* property : {"x", "y", "z", "nx", "ny", "nz"}) EXPECT_NE(mesh.find(property), nullptr) << property;
+
+  const auto sidecar = nlohmann::json::parse(read_text(out_dir() / "liquid.0000.json"));
+  EXPECT_EQ(sidecar.at("frame").get<int>(), 0);
+  EXPECT_EQ(sidecar.at("vertices").get<std::size_t>(), mesh.vertex_count);
+  EXPECT_EQ(sidecar.at("triangles").get<std::size_t>(), mesh.faces.size());
+  EXPECT_DOUBLE_EQ(sidecar.at("kernel_radius_m").get<double>(), 2 * kSpacing);
+  EXPECT_DOUBLE_EQ(sidecar.at("voxel_size_m").get<double>(), 0.5 * kSpacing / 2);
+  EXPECT_EQ(sidecar.at("generator").get<std::string>(), std::string("dewpoint-mesh ") + dp::kVersion);
+  for (const char* key : {"seconds", "source_frames_dir", "enclosed_volume_m3"}) EXPECT_TRUE(sidecar.contains(key)) << key;
+}
+
+TEST_F(mesh_Cli, VoxelSizeOptionOverridesTheScene) {
+  write_tiny_frames();
+  const MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()) + " --voxel-size 0.005 --threads 1");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("mesh tiny 1/1"), std::string::npos) << "no progress line in: " << run.err;
+  const auto sidecar = nlohmann::json::parse(read_text(out_dir() / "liquid.0000.json"));
+  EXPECT_DOUBLE_EQ(sidecar.at("voxel_size_m").get<double>(), 0.005);
+}
+
+TEST_F(mesh_Cli, MissingManifestExitsWithCodeTwoNamingIt) {
+  const MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err.rfind("dewpoint-mesh: " + (frames_dir() / "manifest.json").string() + ": ", 0), 0u) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
+}
+
+TEST_F(mesh_Cli, CorruptParticleFileExitsWithCodeTwoAndWritesNothing) {
+  write_tiny_frames();
+  const fs::path particles = frames_dir() / "particles.0000.ply";
+  const std::string bytes = read_text(particles);
+  std::ofstream(particles, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  const MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()) + " --quiet");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err.rfind("dewpoint-mesh: " + particles.string() + ": ", 0), 0u) << run.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
+}
+
+TEST_F(mesh_Cli, BadFrameAfterGoodOnesStopsBeforeAnyOutput) {
+  write_tiny_frames();
+  dp::io::FramesManifest manifest = dp::io::read_manifest(frames_dir());
+  dp::io::FrameEntry second = manifest.frames[0];
+  second.index = 1;
+  second.particles_file = dp::io::frame_file_name("particles", 1, "ply");
+  manifest.frames.push_back(second);
+  dp::io::write_manifest(frames_dir(), manifest);
+  std::ofstream(frames_dir() / second.particles_file) << "ply\nformat binary_little_endian 1.0\nelement vertex 64\n";
+  const MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()) + " --quiet");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err.rfind("dewpoint-mesh: " + (frames_dir() / second.particles_file).string() + ": ", 0), 0u) << run.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
+}
+
+TEST_F(mesh_Cli, FrameOutsideTheManifestExitsWithCodeTwo) {
+  write_tiny_frames();
+  const MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()) + " --frames 5-9");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err.rfind("dewpoint-mesh: " + (frames_dir() / "manifest.json").string() + ": ", 0), 0u) << run.err;
+}
+
+TEST_F(mesh_Cli, MissingParticleFileExitsWithCodeTwoNamingIt) {
+  write_tiny_frames();
+  fs::remove(frames_dir() / "particles.0000.ply");
+  const MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find((frames_dir() / "particles.0000.ply").string()), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
+}
+
+TEST_F(mesh_Cli, BadCommandLineExitsWithCodeTwoInOneLine) {
+  const MesherRun run = mesher("--threads -1");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err.rfind("dewpoint-mesh: ", 0), 0u) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+}
+
+TEST_F(mesh_Cli, VersionNamesTheProgram) {
+  const MesherRun run = mesher("--version");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_EQ(run.out, std::string("dewpoint-mesh ") + dp::kVersion + "\n");
+}
+
+}  // namespace
