@@ -1,0 +1,29 @@
+#pragma once
+// beauty.NNNN.json, written next to each frame's images: how the frame was
+// made and how long it took, for reproducing it and for tracking speed.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace dp::render {
+
+struct FrameRecord {
+  std::filesystem::path scene_file;
+  std::filesystem::path liquid_mesh;
+  int frame = 0;
+  double frame_time_s = 0;  // simulated time of the frame
+  int width = 0, height = 0;
+  int spp = 0;
+  int max_depth = 0;
+  std::uint64_t seed = 0;
+  double exposure_stops = 0;
+  int threads = 0;  // 0: all cores
+  double render_time_s = 0;  // wall-clock, image only (no file I/O)
+};
+
+nlohmann::json sidecar_json(const FrameRecord& record);
+void write_sidecar(const std::filesystem::path& file, const FrameRecord& record);
+
+}  // namespace dp::render

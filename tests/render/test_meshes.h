@@ -1,0 +1,22 @@
+#pragma once
+// Closed meshes whose exact shapes the render tests reason about.
+#include <array>
+
+#include "ply.h"
+#include "triangle_mesh.h"
+
+namespace dp::render::test {
+
+// A sphere approximated by a subdivided icosahedron, wound counter-
+// clockwise seen from outside, with the exact sphere's normals per vertex.
+// subdivisions = 4 gives 5120 triangles.
+dp::io::TriangleMesh icosphere(std::array<float, 3> centre, float radius, int subdivisions);
+
+// An axis-aligned box with flat faces: four vertices per face, each with the
+// face's outward normal.
+dp::io::TriangleMesh box(std::array<float, 3> min, std::array<float, 3> max);
+
+// The mesh as dewpoint-mesh writes it: x, y, z, nx, ny, nz and faces.
+dp::io::PlyData liquid_ply(const dp::io::TriangleMesh& mesh);
+
+}  // namespace dp::render::test
