@@ -96,7 +96,12 @@ int main(int argc, char** argv) {
   app.add_option("--threads", opt.threads, "CPU threads (0: all)")->check(CLI::NonNegativeNumber);
   app.add_option("--frames", opt.frames, "frames to write, A-B (inclusive)");
   app.add_flag("--quiet", opt.quiet, "no progress output");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version exit 0; any bad command line exits 2 like bad input.
+    return app.exit(e) == 0 ? 0 : 2;
+  }
   try {
     return run(opt);
   } catch (const dp::InstabilityError& e) {
