@@ -9,8 +9,8 @@
 
 namespace dp {
 
-// Samples every triangle on a barycentric lattice whose step along each edge
-// is at most `spacing`; points that coincide on shared edges and corners are
+// Samples every triangle on a lattice along the two edges at the corner
+// opposite its longest edge, with steps of at most `spacing`; points that coincide on shared edges and corners are
 // kept once. Deterministic: the order follows the triangle list.
 std::vector<Vec3> sample_surface(const std::vector<std::array<float, 3>>& positions,
                                  const std::vector<std::array<std::uint32_t, 3>>& triangles, float spacing);
