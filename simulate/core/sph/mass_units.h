@@ -1,0 +1,20 @@
+#pragma once
+// Adaptive particle masses (paper Sec. 4.1): a liquid particle carries the
+// mass w_i m with weight w_i in (0, 1] and m = rho0 spacing^3. The weight is
+// stored as an integer count of mass units, kFullParticleUnits to a full
+// particle, so that merging, redistribution, evaporation and condensation
+// move whole units: mass is conserved exactly, and sums of mass over
+// particles are exact and independent of summation order (DESIGN §6).
+#include <cstdint>
+
+#include "backend/host_device.h"
+
+namespace dp {
+
+using MassUnits = std::uint32_t;
+
+inline constexpr MassUnits kFullParticleUnits = 1u << 24;
+
+DP_HD inline float weight_of(MassUnits units) { return static_cast<float>(units) * (1.0f / kFullParticleUnits); }
+
+}  // namespace dp
