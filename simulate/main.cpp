@@ -65,7 +65,7 @@ int run(const Options& opt) {
   for (int frame = 0; frame <= last_frame; ++frame) {
     // Frame times are independent of the step size: step until the frame's time.
     const double frame_time = frame * frame_interval;
-    while (simulation->time() + 0.5 * sim.time_step_s <= frame_time) simulation->step();
+    simulation->advance_to(frame_time);
     if (!range.contains(frame)) continue;
     dp::ParticleSnapshot particles = simulation->particles();
     dp::io::FrameEntry entry;
@@ -78,7 +78,12 @@ int run(const Options& opt) {
                                  static_cast<float>(manifest.particle_radius_m), comment);
     manifest.frames.push_back(entry);
     dp::io::write_manifest(frames_dir, manifest);
-    progress.update(frame + 1, "t=" + std::to_string(entry.time_s) + " s step " + std::to_string(entry.step));
+    const dp::StepReport& last = simulation->last_step();
+    char detail[160];
+    std::snprintf(detail, sizeof detail, "t=%.4f s  step %lld  dt=%.2e s  PCISPH %d it, density error %.3f %%",
+                  entry.time_s, static_cast<long long>(entry.step), last.dt, last.pressure_iterations,
+                  100.0 * last.density_error);
+    progress.update(frame + 1, detail);
   }
   progress.finish(std::to_string(manifest.frames.size()) + " frames in " + frames_dir.string());
   return 0;

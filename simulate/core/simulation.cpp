@@ -36,8 +36,4 @@ std::unique_ptr<Simulation> make_simulation(const ExecutionConfig& exec, const S
   return make_cpu_simulation(exec.threads, setup);
 }
 
-float max_stable_time_step(const SimulationSetup& setup) {
-  return 0.4f * (0.5f * setup.support_radius()) / setup.liquid.speed_of_sound;
-}
-
 }  // namespace dp

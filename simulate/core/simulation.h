@@ -14,18 +14,35 @@ namespace dp {
 
 struct LiquidMaterial {
   float rest_density = 1000.0f;     // kg/m^3
-  float speed_of_sound = 20.0f;     // m/s, weakly compressible equation of state
-  float viscosity_alpha = 0.02f;    // Monaghan artificial viscosity alpha
-  float boundary_friction = 0.02f;  // the same viscosity against rigid particles (Akinci 2012)
+  float xsph_epsilon = 0.02f;       // XSPH viscosity between liquid particles
+  float boundary_friction = 0.02f;  // XSPH friction against rigid particles
   float temperature = 293.15f;      // K
+};
+
+// PCISPH (Solenthaler & Pajarola 2009) stopping rule.
+struct PressureSolverSettings {
+  float max_density_error = 0.005f;  // eta: average (rho* - rho0)/rho0
+  int min_iterations = 3;
+  int max_iterations = 100;
+};
+
+enum class TimeStepMode { Fixed, Cfl };
+
+struct TimeStepSettings {
+  TimeStepMode mode = TimeStepMode::Cfl;
+  float max_step = 2e-3f;       // s; the step in Fixed mode
+  float min_step = 1e-6f;       // s; a CFL step below this is an instability
+  float cfl_number = 0.4f;      // dt <= cfl * spacing / max speed
+  float force_number = 0.25f;   // dt <= force * sqrt(spacing / max acceleration)
 };
 
 struct SimulationSetup {
   Vec3 domain_min, domain_max;  // m; a particle leaving it is an instability
   Vec3 gravity{0, -9.81f, 0};   // m/s^2
   float particle_spacing = 0.01f;  // m, rest spacing of liquid particles
-  float time_step = 1e-4f;         // s
   float max_speed = 50.0f;         // m/s; faster is an instability
+  TimeStepSettings time_step;
+  PressureSolverSettings pressure;
   LiquidMaterial liquid;
   std::vector<Vec3> liquid_position, liquid_velocity;
   std::vector<Vec3> rigid_position;  // static boundary particles
@@ -36,11 +53,20 @@ struct SimulationSetup {
   }
 };
 
+// What one step did, for logs and the timing tables.
+struct StepReport {
+  float dt = 0;                 // s
+  int pressure_iterations = 0;
+  float density_error = 0;      // average (rho* - rho0)/rho0 after the last iteration
+  double seconds_neighbours = 0, seconds_pressure = 0, seconds_other = 0;  // wall clock
+};
+
 // The state of the liquid particles, in the core's current order; `id` is
 // stable over the whole run.
 struct ParticleSnapshot {
   std::vector<Vec3> position, velocity;
   std::vector<float> density, pressure, weight, temperature;
+  std::vector<std::uint32_t> mass_units;
   std::vector<std::uint32_t> id;
   std::size_t size() const { return position.size(); }
 };
@@ -59,20 +85,19 @@ class InstabilityError : public std::runtime_error {
 class Simulation {
  public:
   virtual ~Simulation() = default;
-  virtual void step() = 0;  // throws InstabilityError
+  virtual StepReport step() = 0;  // throws InstabilityError
+  // Steps, shortening the last step so that time() lands on `time` exactly.
+  virtual void advance_to(double time) = 0;
   virtual ParticleSnapshot particles() const = 0;
   virtual std::vector<Vec3> rigid_particles() const = 0;
   virtual std::vector<float> rigid_volumes() const = 0;
   virtual std::int64_t step_count() const = 0;
   virtual double time() const = 0;  // s
   virtual std::string backend_name() const = 0;
+  virtual const StepReport& last_step() const = 0;
 };
 
 // Throws std::runtime_error naming the reason when the device is unusable.
 std::unique_ptr<Simulation> make_simulation(const ExecutionConfig& exec, const SimulationSetup& setup);
-
-// Largest stable time step for the setup's weakly compressible liquid
-// (CFL number 0.4 on the smoothing length h/2 and the speed of sound).
-float max_stable_time_step(const SimulationSetup& setup);
 
 }  // namespace dp

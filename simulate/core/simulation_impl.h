@@ -1,13 +1,18 @@
 #pragma once
-// One simulation step on either backend. Included only by the two
-// instantiating files, sim_cpu.cpp and sim_cuda.cu.
+// One simulation step on either backend, reading like Algorithm 1, Phase 1.
+// Included only by the two instantiating files, sim_cpu.cpp and sim_cuda.cu.
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <utility>
 
 #include "simulation.h"
+#include "sph/boundary_akinci2012.h"
+#include "sph/density.h"
 #include "sph/particle_grid.h"
-#include "sph/wcsph.h"
+#include "sph/pcisph_solenthaler2009.h"
+#include "sph/time_step.h"
+#include "sph/viscosity_xsph.h"
 
 namespace dp {
 
@@ -26,22 +31,34 @@ struct IsUnstable {
   }
 };
 
+struct SetGravity {
+  Vec3 gravity;
+  Vec3* acceleration;
+  DP_HD void operator()(std::size_t i) const { acceleration[i] = gravity; }
+};
+
+struct TotalAcceleration {
+  const Vec3* a;
+  const Vec3* b;
+  DP_HD float operator()(std::size_t i) const { return length(a[i] + b[i]); }
+};
+
+struct ValueOf {
+  const float* v;
+  DP_HD float operator()(std::size_t i) const { return v[i]; }
+};
+
 template <class Exec>
 class SimulationImpl final : public Simulation {
   template <class T>
   using Buffer = typename Exec::template Buffer<T>;
+  using Clock = std::chrono::steady_clock;
 
  public:
   SimulationImpl(Exec exec, const SimulationSetup& setup) : exec_(std::move(exec)), setup_(setup) {
-    const auto& liq = setup.liquid;
-    params_.kernel = CubicSplineKernel::with_support(setup.support_radius());
-    params_.particle_mass = setup.particle_mass();
-    params_.rest_density = liq.rest_density;
-    params_.speed_of_sound = liq.speed_of_sound;
-    params_.stiffness = liq.rest_density * liq.speed_of_sound * liq.speed_of_sound / 7.0f;
-    params_.viscosity_alpha = liq.viscosity_alpha;
-    params_.boundary_friction = liq.boundary_friction;
-    params_.gravity = setup.gravity;
+    kernel_ = CubicSplineKernel::with_support(setup.support_radius());
+    particle_mass_ = setup.particle_mass();
+    pcisph_sum_ = pcisph_prototype_sum(kernel_, setup.particle_spacing);
 
     UniformGrid grid;
     grid.origin = setup.domain_min;
@@ -53,34 +70,28 @@ class SimulationImpl final : public Simulation {
     liquid_grid_.grid = grid;
     rigid_grid_.grid = grid;
 
-    std::size_t n = setup.liquid_position.size();
+    const std::size_t n = setup.liquid_position.size();
     std::vector<std::uint32_t> ids(n);
     for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(i);
     Exec::upload(position_, setup.liquid_position);
     Exec::upload(velocity_, setup.liquid_velocity);
     Exec::upload(id_, ids);
-    position_tmp_.resize(n);
-    velocity_tmp_.resize(n);
-    id_tmp_.resize(n);
-    density_.resize(n);
-    pressure_.resize(n);
-    acceleration_.resize(n);
+    Exec::upload(units_, std::vector<MassUnits>(n, kFullParticleUnits));
+    Exec::upload(temperature_, std::vector<float>(n, setup.liquid.temperature));
+    resize_scratch(n);
     prepare_rigids(setup.rigid_position);
   }
 
-  void step() override {
-    sort_liquid();
-    const GridView liquid = liquid_grid_.view(position_);
-    const GridView rigid = rigid_grid_.view(rigid_position_);
-    const std::size_t n = position_.size();
-    exec_.parallel_for(n, ComputeDensityAndPressure{liquid, rigid, Exec::ptr(rigid_volume_), params_,
-                                                    Exec::ptr(density_), Exec::ptr(pressure_)});
-    exec_.parallel_for(n, ComputeAcceleration{liquid, rigid, Exec::ptr(rigid_volume_), Exec::ptr(velocity_),
-                                              Exec::ptr(density_), Exec::ptr(pressure_), params_,
-                                              Exec::ptr(acceleration_)});
-    exec_.parallel_for(n, Integrate{Exec::ptr(acceleration_), setup_.time_step, Exec::ptr(velocity_), Exec::ptr(position_)});
-    ++steps_;
-    check_stability();
+  StepReport step() override { return step_with(next_time_step()); }
+
+  void advance_to(double time) override {
+    // Steps end on frame times exactly; a remainder below a microsecond is
+    // rounding of earlier steps, not a step.
+    while (time - time_ > 1e-9) {
+      float dt = next_time_step();
+      if (time_ + dt > time - 1e-9) dt = static_cast<float>(time - time_);
+      step_with(dt);
+    }
   }
 
   ParticleSnapshot particles() const override {
@@ -90,17 +101,29 @@ class SimulationImpl final : public Simulation {
     s.density = Exec::download(density_);
     s.pressure = Exec::download(pressure_);
     s.id = Exec::download(id_);
-    s.weight.assign(s.size(), 1.0f);
-    s.temperature.assign(s.size(), setup_.liquid.temperature);
+    s.mass_units = Exec::download(units_);
+    s.temperature = Exec::download(temperature_);
+    s.weight.resize(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) s.weight[i] = weight_of(s.mass_units[i]);
     return s;
   }
   std::vector<Vec3> rigid_particles() const override { return Exec::download(rigid_position_); }
   std::vector<float> rigid_volumes() const override { return Exec::download(rigid_volume_); }
   std::int64_t step_count() const override { return steps_; }
-  double time() const override { return static_cast<double>(steps_) * setup_.time_step; }
+  double time() const override { return time_; }
   std::string backend_name() const override { return Exec::name(); }
+  const StepReport& last_step() const override { return report_; }
 
  private:
+  static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+  void resize_scratch(std::size_t n) {
+    for (auto* b : {&position_tmp_, &velocity_tmp_, &predicted_, &nonpressure_acc_, &pressure_acc_}) b->resize(n);
+    for (auto* b : {&temperature_tmp_, &density_, &pressure_, &density_error_}) b->resize(n);
+    id_tmp_.resize(n);
+    units_tmp_.resize(n);
+  }
+
   // Rigids are static: sorted and given their volumes once.
   void prepare_rigids(const std::vector<Vec3>& rigid) {
     Buffer<Vec3> unsorted;
@@ -110,8 +133,96 @@ class SimulationImpl final : public Simulation {
     exec_.parallel_for(rigid.size(), Gather<Vec3>{Exec::ptr(rigid_grid_.order), Exec::ptr(unsorted), Exec::ptr(rigid_position_)});
     rigid_grid_.find_ranges(exec_);
     rigid_volume_.resize(rigid.size());
-    exec_.parallel_for(rigid.size(), ComputeBoundaryVolume{rigid_grid_.view(rigid_position_), params_.kernel,
-                                                           Exec::ptr(rigid_volume_)});
+    exec_.parallel_for(rigid.size(), ComputeBoundaryVolume{rigid_grid_.view(rigid_position_), kernel_, Exec::ptr(rigid_volume_)});
+  }
+
+  float next_time_step() const {
+    const TimeStepSettings& ts = setup_.time_step;
+    if (ts.mode == TimeStepMode::Fixed) return ts.max_step;
+    const std::size_t n = position_.size();
+    float vmax = exec_.max(n, SpeedOf{Exec::ptr(velocity_)}, 0.0f);
+    // The last step's total acceleration bounds the next one's; gravity
+    // alone before the first step.
+    float amax = length(setup_.gravity);
+    if (steps_ > 0) amax = std::fmax(amax, last_max_acceleration_);
+    float dt = cfl_time_step(setup_.particle_spacing, vmax, amax, ts.cfl_number, ts.force_number, ts.max_step);
+    if (dt < ts.min_step) {
+      std::ostringstream s;
+      s << "CFL time step " << dt << " s below the minimum " << ts.min_step << " s (max speed " << vmax
+        << " m/s, max acceleration " << amax << " m/s^2)";
+      throw InstabilityError(steps_ + 1, "time step", 0, Vec3{}, s.str());
+    }
+    return dt;
+  }
+
+  StepReport step_with(float dt) {
+    StepReport report;
+    report.dt = dt;
+    auto t0 = Clock::now();
+    sort_liquid();  // Alg. 1 line 3
+    exec_.synchronize();
+    report.seconds_neighbours = seconds_since(t0);
+
+    auto t1 = Clock::now();
+    const std::size_t n = position_.size();
+    const GridView liquid = liquid_grid_.view(position_);
+    const GridView rigid = rigid_grid_.view(rigid_position_);
+    const DensityAt density_at{liquid, rigid, Exec::ptr(units_), Exec::ptr(rigid_volume_), kernel_, particle_mass_,
+                               setup_.liquid.rest_density};
+    exec_.parallel_for(n, ComputeDensity{density_at, Exec::ptr(density_)});
+    // Alg. 1 line 5: external forces.
+    exec_.parallel_for(n, SetGravity{setup_.gravity, Exec::ptr(nonpressure_acc_)});
+    exec_.synchronize();
+    double other = seconds_since(t1);
+
+    auto t2 = Clock::now();
+    solve_pressure(dt, liquid, rigid, report);  // Alg. 1 line 6
+    exec_.synchronize();
+    report.seconds_pressure = seconds_since(t2);
+
+    auto t3 = Clock::now();
+    exec_.parallel_for(n, IntegrateMotion{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_), dt, Exec::ptr(velocity_),
+                                          Exec::ptr(position_)});  // Alg. 1 line 2, for the next step
+    exec_.parallel_for(n, ApplyXsph{liquid, rigid, Exec::ptr(units_), Exec::ptr(density_), Exec::ptr(rigid_volume_),
+                                    Exec::ptr(velocity_), kernel_, particle_mass_, setup_.liquid.xsph_epsilon,
+                                    setup_.liquid.boundary_friction, Exec::ptr(velocity_tmp_)});
+    velocity_.swap(velocity_tmp_);
+    last_max_acceleration_ = exec_.max(n, TotalAcceleration{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_)}, 0.0f);
+    ++steps_;
+    time_ += dt;
+    check_stability();
+    exec_.synchronize();
+    report.seconds_other = other + seconds_since(t3);
+    report_ = report;
+    return report;
+  }
+
+  // PCISPH: predict, correct pressures until the average density error is
+  // below eta (at least min_iterations, at most max_iterations).
+  void solve_pressure(float dt, const GridView& liquid, const GridView& rigid, StepReport& report) {
+    const std::size_t n = position_.size();
+    const PressureSolverSettings& ps = setup_.pressure;
+    const float delta = pcisph_delta(pcisph_sum_, dt, particle_mass_, setup_.liquid.rest_density);
+    const GridView predicted_view{liquid.grid, liquid.cell_begin, liquid.cell_end, Exec::ptr(predicted_)};
+    const DensityAt predicted_density{predicted_view, rigid, Exec::ptr(units_), Exec::ptr(rigid_volume_), kernel_,
+                                      particle_mass_, setup_.liquid.rest_density};
+    exec_.parallel_for(n, ClearPressure{Exec::ptr(pressure_), Exec::ptr(pressure_acc_)});
+    int iteration = 0;
+    float error = 0;
+    while (iteration < ps.max_iterations) {
+      exec_.parallel_for(n, PredictPosition{Exec::ptr(position_), Exec::ptr(velocity_), Exec::ptr(nonpressure_acc_),
+                                            Exec::ptr(pressure_acc_), dt, Exec::ptr(predicted_)});
+      exec_.parallel_for(n, CorrectPressure{predicted_density, delta, Exec::ptr(pressure_), Exec::ptr(density_error_)});
+      exec_.parallel_for(n, ComputePressureAcceleration{liquid, rigid, Exec::ptr(units_), Exec::ptr(rigid_volume_),
+                                                        Exec::ptr(pressure_), kernel_, particle_mass_,
+                                                        setup_.liquid.rest_density, Exec::ptr(pressure_acc_)});
+      ++iteration;
+      const float* e = Exec::ptr(density_error_);
+      error = n > 0 ? static_cast<float>(exec_.sum(n, ValueOf{e}) / static_cast<double>(n)) : 0.0f;
+      if (iteration >= ps.min_iterations && error <= ps.max_density_error) break;
+    }
+    report.pressure_iterations = iteration;
+    report.density_error = error;
   }
 
   // Sorting the particles themselves (not just an index) keeps neighbours
@@ -123,9 +234,13 @@ class SimulationImpl final : public Simulation {
     exec_.parallel_for(n, Gather<Vec3>{order, Exec::ptr(position_), Exec::ptr(position_tmp_)});
     exec_.parallel_for(n, Gather<Vec3>{order, Exec::ptr(velocity_), Exec::ptr(velocity_tmp_)});
     exec_.parallel_for(n, Gather<std::uint32_t>{order, Exec::ptr(id_), Exec::ptr(id_tmp_)});
+    exec_.parallel_for(n, Gather<MassUnits>{order, Exec::ptr(units_), Exec::ptr(units_tmp_)});
+    exec_.parallel_for(n, Gather<float>{order, Exec::ptr(temperature_), Exec::ptr(temperature_tmp_)});
     position_.swap(position_tmp_);
     velocity_.swap(velocity_tmp_);
     id_.swap(id_tmp_);
+    units_.swap(units_tmp_);
+    temperature_.swap(temperature_tmp_);
     liquid_grid_.find_ranges(exec_);
   }
 
@@ -155,14 +270,20 @@ class SimulationImpl final : public Simulation {
 
   Exec exec_;
   SimulationSetup setup_;
-  WcsphParameters params_{};
+  CubicSplineKernel kernel_{};
+  float particle_mass_ = 0;
+  float pcisph_sum_ = 0;
   ParticleGrid<Exec> liquid_grid_, rigid_grid_;
-  Buffer<Vec3> position_, velocity_, acceleration_, position_tmp_, velocity_tmp_;
+  Buffer<Vec3> position_, velocity_, position_tmp_, velocity_tmp_, predicted_, nonpressure_acc_, pressure_acc_;
   Buffer<std::uint32_t> id_, id_tmp_;
-  Buffer<float> density_, pressure_;
+  Buffer<MassUnits> units_, units_tmp_;
+  Buffer<float> temperature_, temperature_tmp_, density_, pressure_, density_error_;
   Buffer<Vec3> rigid_position_;
   Buffer<float> rigid_volume_;
   std::int64_t steps_ = 0;
+  double time_ = 0;
+  float last_max_acceleration_ = 0;
+  StepReport report_;
 };
 
 }  // namespace dp

@@ -33,21 +33,29 @@ struct RigidObject {
 
 struct LiquidSettings {
   double rest_density_kg_m3 = 1000;
-  double speed_of_sound_m_s = 20;
-  double viscosity_alpha = 0.02;
+  double xsph_epsilon = 0.02;
   double boundary_friction = 0.02;
   double temperature_k = 293.15;
+};
+
+struct PressureSolverSettings {
+  double max_density_error = 0.005;
+  int min_iterations = 3;
+  int max_iterations = 100;
 };
 
 struct SimulationSettings {
   Vec3d domain_min_m, domain_max_m;
   Vec3d gravity_m_s2{0, -9.81, 0};
   double particle_spacing_m = 0.01;
-  double time_step_s = 1e-4;
+  double time_step_s = 2e-3;  // the step (fixed) or its upper bound (cfl)
+  bool cfl_time_step = true;
+  double cfl_number = 0.4;
   double duration_s = 1;
   double frame_rate_hz = 24;
   double max_speed_m_s = 50;
   LiquidSettings liquid;
+  PressureSolverSettings pressure_solver;
   std::vector<LiquidBlock> liquid_blocks;
   std::vector<RigidObject> rigids;
 };

@@ -36,11 +36,15 @@ SimulationSetup make_simulation_setup(const Scene& scene) {
   setup.domain_max = to_vec3(s.domain_max_m);
   setup.gravity = to_vec3(s.gravity_m_s2);
   setup.particle_spacing = static_cast<float>(s.particle_spacing_m);
-  setup.time_step = static_cast<float>(s.time_step_s);
+  setup.time_step.mode = s.cfl_time_step ? TimeStepMode::Cfl : TimeStepMode::Fixed;
+  setup.time_step.max_step = static_cast<float>(s.time_step_s);
+  setup.time_step.cfl_number = static_cast<float>(s.cfl_number);
+  setup.pressure.max_density_error = static_cast<float>(s.pressure_solver.max_density_error);
+  setup.pressure.min_iterations = s.pressure_solver.min_iterations;
+  setup.pressure.max_iterations = s.pressure_solver.max_iterations;
   setup.max_speed = static_cast<float>(s.max_speed_m_s);
   setup.liquid.rest_density = static_cast<float>(s.liquid.rest_density_kg_m3);
-  setup.liquid.speed_of_sound = static_cast<float>(s.liquid.speed_of_sound_m_s);
-  setup.liquid.viscosity_alpha = static_cast<float>(s.liquid.viscosity_alpha);
+  setup.liquid.xsph_epsilon = static_cast<float>(s.liquid.xsph_epsilon);
   setup.liquid.boundary_friction = static_cast<float>(s.liquid.boundary_friction);
   setup.liquid.temperature = static_cast<float>(s.liquid.temperature_k);
   for (const LiquidBlock& block : s.liquid_blocks) {

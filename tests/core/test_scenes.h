@@ -10,10 +10,10 @@ namespace dp::test {
 inline SimulationSetup block_over_plate(int nx, int ny, int nz) {
   SimulationSetup s;
   s.particle_spacing = 0.01f;
-  s.time_step = 1e-4f;
+  s.time_step.mode = TimeStepMode::Fixed;
+  s.time_step.max_step = 1e-3f;
   s.domain_min = Vec3{-0.2f, -0.05f, -0.2f};
   s.domain_max = Vec3{0.2f, 0.4f, 0.2f};
-  s.liquid.speed_of_sound = 20.0f;
   const float h = s.particle_spacing;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)

@@ -52,7 +52,7 @@ TEST(Scene, DemoLoads) {
 
 TEST(Scene, UnknownKeyIsNamedWithItsPath) {
   auto doc = demo_document();
-  doc["simulation"]["liquid"]["viscosity"] = 0.1;
+  doc["simulation"]["liquid"]["viscosity"] = 0.1;  // the key is xsph_epsilon
   std::string e = error_of(doc, "unknown_key.json");
   EXPECT_NE(e.find("unknown_key.json"), std::string::npos) << e;
   EXPECT_NE(e.find("simulation.liquid.viscosity: unknown key"), std::string::npos) << e;
@@ -80,11 +80,11 @@ TEST(Scene, MissingRequiredKey) {
   EXPECT_NE(e.find("simulation.particle_spacing_m: missing required key"), std::string::npos) << e;
 }
 
-TEST(Scene, TimeStepAboveCflLimitIsRejected) {
+TEST(Scene, UnknownTimeStepModeIsRejected) {
   auto doc = demo_document();
-  doc["simulation"]["time_step_s"] = 0.01;
-  std::string e = error_of(doc, "cfl.json");
-  EXPECT_NE(e.find("simulation.time_step_s: expected at most"), std::string::npos) << e;
+  doc["simulation"]["time_step_mode"] = "adaptive";
+  std::string e = error_of(doc, "mode.json");
+  EXPECT_NE(e.find("simulation.time_step_mode: expected \"cfl\" or \"fixed\", found \"adaptive\""), std::string::npos) << e;
 }
 
 TEST(Scene, TemperatureBelowAbsoluteZeroIsRejected) {

@@ -1,0 +1,47 @@
+#pragma once
+// SPH density with adaptive masses (paper Sec. 4.1: the weighted mass
+// w_j m enters the sum, so a lighter particle occupies less volume) and the
+// rigid boundary's share (Akinci 2012, Eq. 6).
+#include <cstdint>
+
+#include "backend/host_device.h"
+#include "sph/kernel_cubic_spline.h"
+#include "sph/mass_units.h"
+#include "sph/uniform_grid.h"
+
+namespace dp {
+
+// rho(x) = sum_j w_j m W(x - x_j) + sum_b rho0 V_b W(x - x_b), at any point x.
+struct DensityAt {
+  GridView liquid;
+  GridView rigid;
+  const MassUnits* units;
+  const float* rigid_volume;
+  CubicSplineKernel kernel;
+  float particle_mass;  // m of a full particle
+  float rest_density;
+
+  DP_HD float operator()(Vec3 x) const {
+    const float h2 = kernel.h * kernel.h;
+    float liquid_part = 0.0f, rigid_part = 0.0f;
+    // Most candidates of the 27 cells lie outside the support: rejected on
+    // the squared distance before the square root.
+    liquid.for_each_near(x, [&](std::uint32_t j) {
+      float r2 = length_squared(x - liquid.position[j]);
+      if (r2 < h2) liquid_part += weight_of(units[j]) * kernel.W(sqrtf(r2));
+    });
+    rigid.for_each_near(x, [&](std::uint32_t b) {
+      float r2 = length_squared(x - rigid.position[b]);
+      if (r2 < h2) rigid_part += rigid_volume[b] * kernel.W(sqrtf(r2));
+    });
+    return particle_mass * liquid_part + rest_density * rigid_part;
+  }
+};
+
+struct ComputeDensity {
+  DensityAt density_at;
+  float* density;
+  DP_HD void operator()(std::size_t i) const { density[i] = density_at(density_at.liquid.position[i]); }
+};
+
+}  // namespace dp

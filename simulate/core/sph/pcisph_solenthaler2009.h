@@ -1,0 +1,114 @@
+#pragma once
+// Predictive-corrective incompressible SPH, Solenthaler & Pajarola 2009
+// (paper Alg. 1 line 6). Pressures are corrected iteratively from the
+// density error of predicted positions until the average error is below eta.
+// Rigid particles contribute density and push back as in Akinci et al. 2012.
+#include <cstdint>
+
+#include "backend/host_device.h"
+#include "sph/density.h"
+#include "sph/kernel_cubic_spline.h"
+#include "sph/mass_units.h"
+#include "sph/uniform_grid.h"
+
+namespace dp {
+
+// The neighbourhood sum of Solenthaler & Pajarola's Eq. 8 for a particle
+// with a filled neighbourhood (a cubic lattice at the rest spacing):
+// S = |sum_j gradW_ij|^2 + sum_j |gradW_ij|^2; then
+// delta(dt) = 1 / (2 (dt m / rho0)^2 S). Computed once on the host.
+float pcisph_prototype_sum(const CubicSplineKernel& kernel, float spacing);
+
+DP_HD inline float pcisph_delta(float prototype_sum, float dt, float particle_mass, float rest_density) {
+  float beta = 2.0f * (dt * particle_mass / rest_density) * (dt * particle_mass / rest_density);
+  return 1.0f / (beta * prototype_sum);
+}
+
+// x* = x + dt v*,  v* = v + dt (a_nonpressure + a_pressure).
+struct PredictPosition {
+  const Vec3* position;
+  const Vec3* velocity;
+  const Vec3* nonpressure_acceleration;
+  const Vec3* pressure_acceleration;
+  float dt;
+  Vec3* predicted;
+  DP_HD void operator()(std::size_t i) const {
+    Vec3 v = velocity[i] + dt * (nonpressure_acceleration[i] + pressure_acceleration[i]);
+    predicted[i] = position[i] + dt * v;
+  }
+};
+
+// The density at the predicted position, with neighbours at their predicted
+// positions (same neighbour cells as at the start of the step), clamped
+// from below at rho0 so that the free surface does not pull.
+// p_i += delta * (rho*_i - rho0); the error is kept for the average.
+struct CorrectPressure {
+  DensityAt predicted_density;  // its liquid GridView holds the predicted positions
+  float delta;
+  float* pressure;
+  float* density_error;  // (rho* - rho0) / rho0, >= 0
+  DP_HD void operator()(std::size_t i) const {
+    const float rho0 = predicted_density.rest_density;
+    float rho = predicted_density(predicted_density.liquid.position[i]);
+    float error = rho > rho0 ? rho - rho0 : 0.0f;
+    pressure[i] += delta * error;
+    density_error[i] = error / rho0;
+  }
+};
+
+// a_i = -sum_j m_j (p_i + p_j)/rho0^2 gradW_ij - sum_b Psi_b p_i/rho0^2 gradW_ib
+// at the current positions (Solenthaler & Pajarola use rho0 in the
+// denominators; Akinci 2012 Eq. 10 for the boundary).
+struct ComputePressureAcceleration {
+  GridView liquid;
+  GridView rigid;
+  const MassUnits* units;
+  const float* rigid_volume;
+  const float* pressure;
+  CubicSplineKernel kernel;
+  float particle_mass;
+  float rest_density;
+  Vec3* acceleration;
+  DP_HD void operator()(std::size_t i) const {
+    const Vec3 xi = liquid.position[i];
+    const float h2 = kernel.h * kernel.h;
+    const float inv_rho2 = 1.0f / (rest_density * rest_density);
+    const float pi = pressure[i];
+    Vec3 a{};
+    liquid.for_each_near(xi, [&](std::uint32_t j) {
+      Vec3 xij = xi - liquid.position[j];
+      if (j == i || length_squared(xij) >= h2) return;
+      a -= (particle_mass * weight_of(units[j]) * (pi + pressure[j]) * inv_rho2) * kernel.gradW(xij);
+    });
+    rigid.for_each_near(xi, [&](std::uint32_t b) {
+      Vec3 xib = xi - rigid.position[b];
+      if (length_squared(xib) >= h2) return;
+      a -= (rest_density * rigid_volume[b] * pi * inv_rho2) * kernel.gradW(xib);
+    });
+    acceleration[i] = a;
+  }
+};
+
+struct ClearPressure {
+  float* pressure;
+  Vec3* acceleration;
+  DP_HD void operator()(std::size_t i) const {
+    pressure[i] = 0.0f;
+    acceleration[i] = Vec3{};
+  }
+};
+
+// Symplectic Euler with the total acceleration.
+struct IntegrateMotion {
+  const Vec3* nonpressure_acceleration;
+  const Vec3* pressure_acceleration;
+  float dt;
+  Vec3* velocity;
+  Vec3* position;
+  DP_HD void operator()(std::size_t i) const {
+    velocity[i] += dt * (nonpressure_acceleration[i] + pressure_acceleration[i]);
+    position[i] += dt * velocity[i];
+  }
+};
+
+}  // namespace dp

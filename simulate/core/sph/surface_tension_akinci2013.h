@@ -1,0 +1,184 @@
+#pragma once
+// Surface tension and adhesion of Akinci, Akinci & Teschner 2013, "Versatile
+// Surface Tension and Adhesion for SPH Fluids" (ACM TOG 32(6)), which the
+// paper uses for its particles (Sec. 4.1). Two liquid-liquid forces act
+// between neighbours i, j: cohesion, a short-range pair potential that pulls
+// particles at mid distances together and pushes very close ones apart, and
+// a curvature term, which moves particles so as to even out their surface
+// normals and so shrinks the surface. Liquid-boundary adhesion pulls liquid
+// particles towards rigid boundary particles (Akinci 2012 sampling).
+//
+// Units. Lengths in m, masses in kg, densities in kg/m^3; the functors yield
+// accelerations in m/s^2. Both kernels C and A are in m^-3. The model is
+// dimensionally loose, as published: one coefficient gamma scales the
+// cohesion acceleration gamma m_j C (gamma in m^4 kg^-1 s^-2) and the
+// curvature acceleration gamma (n_i - n_j) with dimensionless normals (gamma
+// in m s^-2). gamma and beta are therefore tuned per resolution, and the
+// numbers are meaningful for the SI quantities stated here.
+//
+// Adaptive masses (paper Sec. 4.1): particles carry m_i = w_i m. The paper
+// (Akinci) assumes equal masses; where its formula has m_i in a pair force
+// that must be antisymmetric, the pair's harmonic mean mass is used instead
+// (see curvature_mass_ratio).
+#include <cstdint>
+
+#include "backend/host_device.h"
+#include "math/vec3.h"
+#include "sph/kernel_cubic_spline.h"
+#include "sph/mass_units.h"
+#include "sph/uniform_grid.h"
+
+namespace dp {
+
+// Akinci 2013, Eq. 2, with support radius h:
+//   C(r) = 32 / (pi h^9) * (h - r)^3 r^3                 for h/2 < r <= h
+//          32 / (pi h^9) * (2 (h - r)^3 r^3 - h^6 / 64)  for 0 < r <= h/2
+//          0                                            otherwise.
+// Positive values attract. The inner branch turns repulsive below the root
+// of 2 (h - r)^3 r^3 = h^6 / 64, which keeps clustering particles apart
+// even where a clamped pressure does not.
+struct CohesionKernel {
+  float h;
+  float scale;  // 32 / (pi h^9)
+
+  DP_HD static CohesionKernel with_support(float h) {
+    float h3 = h * h * h;
+    return CohesionKernel{h, 32.0f / (3.14159265358979f * h3 * h3 * h3)};
+  }
+
+  DP_HD float C(float r) const {
+    if (r <= 0.0f || r > h) return 0.0f;
+    float outer = (h - r) * r;
+    float pair_term = outer * outer * outer;  // (h - r)^3 r^3
+    if (2.0f * r > h) return scale * pair_term;
+    float h3 = h * h * h;
+    return scale * (2.0f * pair_term - h3 * h3 * (1.0f / 64.0f));
+  }
+};
+
+// Akinci 2013, Eq. 7:
+//   A(r) = 0.007 / h^3.25 * (-4 r^2 / h + 6 r - 2 h)^(1/4)   for h/2 < r <= h
+//          0                                                otherwise.
+// It vanishes at both ends of its range and peaks at r = 3h/4, so a liquid
+// particle is drawn to a wall distance where it does not overlap the
+// boundary particles.
+struct AdhesionKernel {
+  float h;
+  float scale;  // 0.007 / h^3.25
+
+  DP_HD static AdhesionKernel with_support(float h) { return AdhesionKernel{h, 0.007f / powf(h, 3.25f)}; }
+
+  DP_HD float A(float r) const {
+    if (2.0f * r <= h || r > h) return 0.0f;
+    float radicand = -4.0f * r * r / h + 6.0f * r - 2.0f * h;
+    // Rounding can leave the radicand a hair below zero at the range's ends.
+    if (radicand <= 0.0f) return 0.0f;
+    return scale * sqrtf(sqrtf(radicand));
+  }
+};
+
+// Correction factor of Akinci 2013, Eq. 4: K_ij = 2 rho0 / (rho_i + rho_j).
+// Particles at the surface lack neighbours, so their densities are low and
+// K_ij > 1 amplifies the forces there, where surface tension belongs.
+DP_HD inline float surface_deficiency_factor(float rest_density, float density_i, float density_j) {
+  return 2.0f * rest_density / (density_i + density_j);
+}
+
+// The curvature force of Akinci 2013, Eq. 3, is -gamma m_i (n_i - n_j):
+// with unequal masses the forces on i and on j would not be opposite, and
+// the liquid would gain momentum from nothing. The pair's harmonic mean
+// 2 m_i m_j / (m_i + m_j) replaces m_i; it equals m_i for equal masses (the
+// published case) and, unlike the arithmetic mean, keeps a light particle's
+// acceleration below twice the equal-mass value. Returned divided by m_i,
+// for an acceleration.
+DP_HD inline float curvature_mass_ratio(float mass_i, float mass_j) { return 2.0f * mass_j / (mass_i + mass_j); }
+
+// Akinci 2013, Eq. 5: n_i = h sum_j (m_j / rho_j) grad W_ij, the colour
+// field's gradient scaled by the support radius so that |n| is of order 1 at
+// the surface and near 0 inside. It points out of the liquid.
+struct ComputeSurfaceNormal {
+  GridView liquid;          // sorted liquid positions
+  const MassUnits* units;   // w_j, in mass units, sorted like the positions
+  const float* density;     // rho_j, kg/m^3
+  CubicSplineKernel kernel;
+  float particle_mass;      // m of a full particle, kg
+  Vec3* normal;             // dimensionless
+  DP_HD void operator()(std::size_t i) const {
+    const Vec3 xi = liquid.position[i];
+    const float h2 = kernel.h * kernel.h;
+    Vec3 n{};
+    liquid.for_each_near(xi, [&](std::uint32_t j) {
+      Vec3 xij = xi - liquid.position[j];
+      if (j == i || length_squared(xij) >= h2) return;
+      n += (particle_mass * weight_of(units[j]) / density[j]) * kernel.gradW(xij);
+    });
+    normal[i] = kernel.h * n;
+  }
+};
+
+struct SurfaceTensionParameters {
+  CubicSplineKernel kernel;  // the liquid's kernel; h is also the cohesion/adhesion support
+  float particle_mass;       // m of a full particle, kg
+  float rest_density;        // rho0, kg/m^3
+  float tension;             // gamma of the liquid (see the units above)
+};
+
+// Cohesion plus curvature, summed over liquid neighbours (Akinci 2013,
+// Eq. 1-4), and adhesion to boundary particles (Eq. 6), as one acceleration:
+//   a_i = sum_j K_ij (-gamma m_j C(r_ij) x_ij / r_ij - gamma (2 m_j / (m_i + m_j)) (n_i - n_j))
+//       + sum_b -beta_b Psi_b A(r_ib) x_ib / r_ib,        Psi_b = rho0 V_b.
+// Writes acceleration[i] (the surface tension contribution only; the step
+// adds it to the others).
+struct ComputeSurfaceTensionAcceleration {
+  GridView liquid;              // sorted liquid positions
+  GridView rigid;               // rigid boundary particles
+  const MassUnits* units;       // w_i, sorted like the liquid positions
+  const float* density;         // rho_i, kg/m^3
+  const Vec3* normal;           // from ComputeSurfaceNormal
+  const float* rigid_volume;    // V_b, m^3 (Akinci 2012, Eq. 4)
+  const float* rigid_adhesion;  // beta of the rigid material each boundary particle samples
+  SurfaceTensionParameters p;
+  Vec3* acceleration;           // m/s^2
+
+  DP_HD Vec3 liquid_part(std::size_t i) const {
+    const Vec3 xi = liquid.position[i], ni = normal[i];
+    const float h2 = p.kernel.h * p.kernel.h;
+    const float mi = p.particle_mass * weight_of(units[i]), rhoi = density[i];
+    const CohesionKernel cohesion = CohesionKernel::with_support(p.kernel.h);
+    Vec3 a{};
+    liquid.for_each_near(xi, [&](std::uint32_t j) {
+      Vec3 xij = xi - liquid.position[j];
+      float r2 = length_squared(xij);
+      if (j == i || r2 >= h2) return;
+      float mj = p.particle_mass * weight_of(units[j]);
+      Vec3 pair = -curvature_mass_ratio(mi, mj) * (ni - normal[j]);
+      // Coincident particles have no direction to attract along.
+      if (r2 > 0.0f) {
+        float r = sqrtf(r2);
+        pair -= (mj * cohesion.C(r) / r) * xij;
+      }
+      a += (p.tension * surface_deficiency_factor(p.rest_density, rhoi, density[j])) * pair;
+    });
+    return a;
+  }
+
+  DP_HD Vec3 adhesion_part(std::size_t i) const {
+    const Vec3 xi = liquid.position[i];
+    const float h2 = p.kernel.h * p.kernel.h;
+    const AdhesionKernel adhesion = AdhesionKernel::with_support(p.kernel.h);
+    Vec3 a{};
+    rigid.for_each_near(xi, [&](std::uint32_t b) {
+      Vec3 xib = xi - rigid.position[b];
+      float r2 = length_squared(xib);
+      if (r2 >= h2 || r2 <= 0.0f) return;
+      float r = sqrtf(r2);
+      float psi = p.rest_density * rigid_volume[b];
+      a -= (rigid_adhesion[b] * psi * adhesion.A(r) / r) * xib;
+    });
+    return a;
+  }
+
+  DP_HD void operator()(std::size_t i) const { acceleration[i] = liquid_part(i) + adhesion_part(i); }
+};
+
+}  // namespace dp
