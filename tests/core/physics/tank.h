@@ -1,0 +1,43 @@
+#pragma once
+// Open-top tanks of boundary particles and blocks of liquid for the physics
+// validations.
+#include <cmath>
+#include <vector>
+
+#include "simulation.h"
+
+namespace dp::test {
+
+// Boundary particles on the floor and four walls of the box
+// [0, lx] x [0, ly] x [0, lz], at about `spacing` (one layer, Akinci 2012).
+inline std::vector<Vec3> open_tank(float lx, float ly, float lz, float spacing) {
+  std::vector<Vec3> b;
+  const int mx = static_cast<int>(std::ceil(lx / spacing)), my = static_cast<int>(std::ceil(ly / spacing));
+  const int mz = static_cast<int>(std::ceil(lz / spacing));
+  const float dx = lx / mx, dy = ly / my, dz = lz / mz;
+  for (int k = 0; k <= mz; ++k)
+    for (int i = 0; i <= mx; ++i) b.push_back(Vec3{i * dx, 0, k * dz});
+  for (int j = 1; j <= my; ++j) {
+    for (int i = 0; i <= mx; ++i) {
+      b.push_back(Vec3{i * dx, j * dy, 0});
+      b.push_back(Vec3{i * dx, j * dy, lz});
+    }
+    for (int k = 1; k < mz; ++k) {
+      b.push_back(Vec3{0, j * dy, k * dz});
+      b.push_back(Vec3{lx, j * dy, k * dz});
+    }
+  }
+  return b;
+}
+
+// nx x ny x nz particles at `spacing`, the first at `corner`.
+inline void add_block(SimulationSetup& s, Vec3 corner, int nx, int ny, int nz) {
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        s.liquid_position.push_back(corner + s.particle_spacing * Vec3{float(i), float(j), float(k)});
+        s.liquid_velocity.push_back(Vec3{});
+      }
+}
+
+}  // namespace dp::test
