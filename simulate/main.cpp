@@ -58,7 +58,7 @@ int run(const Options& opt) {
   manifest.extra["settings"] = {{"device", opt.device}, {"threads", exec.threads}, {"frames", opt.frames}};
   manifest.extra["scene"] = scene.document;
   dp::io::write_rigid_particles(frames_dir / manifest.rigid_particles_file, simulation->rigid_particles(),
-                                simulation->rigid_volumes(), comment);
+                                simulation->rigid_volumes(), simulation->rigid_temperatures(), comment);
 
   const double frame_interval = 1.0 / sim.frame_rate_hz;
   dp::io::Progress progress("simulate " + scene.name, last_frame + 1, opt.quiet);

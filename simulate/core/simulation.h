@@ -14,9 +14,18 @@ namespace dp {
 
 struct LiquidMaterial {
   float rest_density = 1000.0f;     // kg/m^3
+  float conductivity = 0.6f;        // kappa, W/(m K), water
+  float specific_heat = 4186.0f;    // C, J/(kg K), water
   float xsph_epsilon = 0.02f;       // XSPH viscosity between liquid particles
   float boundary_friction = 0.02f;  // XSPH friction against rigid particles
   float temperature = 293.15f;      // K
+};
+
+// The rigid objects' material for heat conduction (one for all rigids).
+struct RigidMaterial {
+  float density = 2500.0f;         // kg/m^3 (glass)
+  float conductivity = 1.0f;       // W/(m K)
+  float specific_heat = 840.0f;    // J/(kg K)
 };
 
 // PCISPH (Solenthaler & Pajarola 2009) stopping rule.
@@ -44,8 +53,13 @@ struct SimulationSetup {
   TimeStepSettings time_step;
   PressureSolverSettings pressure;
   LiquidMaterial liquid;
+  RigidMaterial rigid;
+  bool heat_conduction = true;
   std::vector<Vec3> liquid_position, liquid_velocity;
-  std::vector<Vec3> rigid_position;  // static boundary particles
+  std::vector<float> liquid_temperature;  // K, per particle; empty: liquid.temperature
+  std::vector<Vec3> rigid_position;       // static boundary particles
+  std::vector<float> rigid_temperature;   // K, per rigid particle
+  std::vector<std::uint8_t> rigid_held;   // 1: held at its temperature (a heated plate)
 
   float support_radius() const { return 2.0f * particle_spacing; }
   float particle_mass() const {
@@ -58,14 +72,14 @@ struct StepReport {
   float dt = 0;                 // s
   int pressure_iterations = 0;
   float density_error = 0;      // average (rho* - rho0)/rho0 after the last iteration
-  double seconds_neighbours = 0, seconds_pressure = 0, seconds_other = 0;  // wall clock
+  double seconds_neighbours = 0, seconds_pressure = 0, seconds_heat = 0, seconds_other = 0;  // wall clock
 };
 
 // The state of the liquid particles, in the core's current order; `id` is
 // stable over the whole run.
 struct ParticleSnapshot {
   std::vector<Vec3> position, velocity;
-  std::vector<float> density, pressure, weight, temperature;
+  std::vector<float> density, pressure, weight, temperature, surface_area;
   std::vector<std::uint32_t> mass_units;
   std::vector<std::uint32_t> id;
   std::size_t size() const { return position.size(); }
@@ -91,6 +105,7 @@ class Simulation {
   virtual ParticleSnapshot particles() const = 0;
   virtual std::vector<Vec3> rigid_particles() const = 0;
   virtual std::vector<float> rigid_volumes() const = 0;
+  virtual std::vector<float> rigid_temperatures() const = 0;  // in the order of rigid_particles()
   virtual std::int64_t step_count() const = 0;
   virtual double time() const = 0;  // s
   virtual std::string backend_name() const = 0;

@@ -9,8 +9,10 @@
 #include "simulation.h"
 #include "sph/boundary_akinci2012.h"
 #include "sph/density.h"
+#include "sph/heat_cleary_monaghan1999.h"
 #include "sph/particle_grid.h"
 #include "sph/pcisph_solenthaler2009.h"
+#include "sph/surface_area_orthmann2013.h"
 #include "sph/time_step.h"
 #include "sph/viscosity_xsph.h"
 
@@ -77,9 +79,12 @@ class SimulationImpl final : public Simulation {
     Exec::upload(velocity_, setup.liquid_velocity);
     Exec::upload(id_, ids);
     Exec::upload(units_, std::vector<MassUnits>(n, kFullParticleUnits));
-    Exec::upload(temperature_, std::vector<float>(n, setup.liquid.temperature));
+    Exec::upload(temperature_, setup.liquid_temperature.size() == n ? setup.liquid_temperature
+                                                                      : std::vector<float>(n, setup.liquid.temperature));
     resize_scratch(n);
-    prepare_rigids(setup.rigid_position);
+    prepare_rigids(setup);
+    area_calibration_ = flat_face_area_calibration(kernel_, setup.particle_spacing);
+    heat_dt_limit_ = heat_time_step_limit_of(setup);
   }
 
   StepReport step() override { return step_with(next_time_step()); }
@@ -103,12 +108,14 @@ class SimulationImpl final : public Simulation {
     s.id = Exec::download(id_);
     s.mass_units = Exec::download(units_);
     s.temperature = Exec::download(temperature_);
+    s.surface_area = Exec::download(surface_area_);
     s.weight.resize(s.size());
     for (std::size_t i = 0; i < s.size(); ++i) s.weight[i] = weight_of(s.mass_units[i]);
     return s;
   }
   std::vector<Vec3> rigid_particles() const override { return Exec::download(rigid_position_); }
   std::vector<float> rigid_volumes() const override { return Exec::download(rigid_volume_); }
+  std::vector<float> rigid_temperatures() const override { return Exec::download(rigid_temperature_); }
   std::int64_t step_count() const override { return steps_; }
   double time() const override { return time_; }
   std::string backend_name() const override { return Exec::name(); }
@@ -119,21 +126,70 @@ class SimulationImpl final : public Simulation {
 
   void resize_scratch(std::size_t n) {
     for (auto* b : {&position_tmp_, &velocity_tmp_, &predicted_, &nonpressure_acc_, &pressure_acc_}) b->resize(n);
-    for (auto* b : {&temperature_tmp_, &density_, &pressure_, &density_error_}) b->resize(n);
+    for (auto* b : {&temperature_tmp_, &density_, &pressure_, &density_error_, &surface_area_, &liquid_rate_}) b->resize(n);
     id_tmp_.resize(n);
     units_tmp_.resize(n);
   }
 
   // Rigids are static: sorted and given their volumes once.
-  void prepare_rigids(const std::vector<Vec3>& rigid) {
+  void prepare_rigids(const SimulationSetup& setup) {
+    const std::size_t m = setup.rigid_position.size();
     Buffer<Vec3> unsorted;
-    Exec::upload(unsorted, rigid);
+    Exec::upload(unsorted, setup.rigid_position);
     rigid_grid_.sort(exec_, unsorted);
-    rigid_position_.resize(rigid.size());
-    exec_.parallel_for(rigid.size(), Gather<Vec3>{Exec::ptr(rigid_grid_.order), Exec::ptr(unsorted), Exec::ptr(rigid_position_)});
+    const std::uint32_t* order = Exec::ptr(rigid_grid_.order);
+    rigid_position_.resize(m);
+    exec_.parallel_for(m, Gather<Vec3>{order, Exec::ptr(unsorted), Exec::ptr(rigid_position_)});
     rigid_grid_.find_ranges(exec_);
-    rigid_volume_.resize(rigid.size());
-    exec_.parallel_for(rigid.size(), ComputeBoundaryVolume{rigid_grid_.view(rigid_position_), kernel_, Exec::ptr(rigid_volume_)});
+    rigid_volume_.resize(m);
+    exec_.parallel_for(m, ComputeBoundaryVolume{rigid_grid_.view(rigid_position_), kernel_, Exec::ptr(rigid_volume_)});
+
+    Buffer<float> temperature;
+    Buffer<std::uint8_t> held;
+    Exec::upload(temperature, setup.rigid_temperature.size() == m ? setup.rigid_temperature
+                                                                   : std::vector<float>(m, setup.liquid.temperature));
+    Exec::upload(held, setup.rigid_held.size() == m ? setup.rigid_held : std::vector<std::uint8_t>(m, 0));
+    rigid_temperature_.resize(m);
+    rigid_held_.resize(m);
+    rigid_rate_.resize(m);
+    exec_.parallel_for(m, Gather<float>{order, Exec::ptr(temperature), Exec::ptr(rigid_temperature_)});
+    exec_.parallel_for(m, Gather<std::uint8_t>{order, Exec::ptr(held), Exec::ptr(rigid_held_)});
+  }
+
+  // Explicit heat conduction is stable below rho C h^2 / (24 kappa) for each
+  // material, kappa being the larger of its own and the harmonic mean with
+  // the other material (heat_cleary_monaghan1999.h).
+  static float heat_time_step_limit_of(const SimulationSetup& setup) {
+    if (!setup.heat_conduction) return 1e30f;
+    const CubicSplineKernel kernel = CubicSplineKernel::with_support(setup.support_radius());
+    const LiquidMaterial& l = setup.liquid;
+    const RigidMaterial& r = setup.rigid;
+    const float mixed = l.conductivity + r.conductivity > 0 ? 2 * l.conductivity * r.conductivity / (l.conductivity + r.conductivity) : 0;
+    float dt = 1e30f;
+    const float kl = std::fmax(l.conductivity, setup.rigid_position.empty() ? 0.0f : mixed);
+    if (kl > 0) dt = std::fmin(dt, heat_time_step_limit(kernel, l.rest_density, l.specific_heat, kl));
+    const float kr = std::fmax(r.conductivity, mixed);
+    if (!setup.rigid_position.empty() && kr > 0) dt = std::fmin(dt, heat_time_step_limit(kernel, r.density, r.specific_heat, kr));
+    return dt;
+  }
+
+  // Alg. 1 line 4: conduction liquid<->liquid, liquid<->rigid, rigid<->rigid
+  // (Cleary & Monaghan 1999, paper Eq. 9), explicit in time.
+  void conduct_heat(float dt, const GridView& liquid, const GridView& rigid) {
+    const std::size_t n = position_.size(), m = rigid_position_.size();
+    const LiquidMaterial& l = setup_.liquid;
+    const RigidMaterial& r = setup_.rigid;
+    const ThermalParticles liquid_set = ThermalParticles::liquid(liquid, Exec::ptr(temperature_), Exec::ptr(units_),
+                                                                 Exec::ptr(density_), particle_mass_, l.conductivity,
+                                                                 l.specific_heat);
+    const ThermalParticles rigid_set = ThermalParticles::rigid(rigid, Exec::ptr(rigid_temperature_), Exec::ptr(rigid_volume_),
+                                                               r.density, r.conductivity, r.specific_heat);
+    // Both rates from the temperatures at the start of the step, then both
+    // updates: the exchange between the sets stays antisymmetric.
+    exec_.parallel_for(n, ComputeTemperatureRate{liquid_set, rigid_set, m > 0, kernel_, Exec::ptr(liquid_rate_)});
+    exec_.parallel_for(m, ComputeTemperatureRate{rigid_set, liquid_set, n > 0, kernel_, Exec::ptr(rigid_rate_)});
+    exec_.parallel_for(n, IntegrateTemperature{Exec::ptr(liquid_rate_), nullptr, dt, Exec::ptr(temperature_)});
+    exec_.parallel_for(m, IntegrateTemperature{Exec::ptr(rigid_rate_), Exec::ptr(rigid_held_), dt, Exec::ptr(rigid_temperature_)});
   }
 
   float next_time_step() const {
@@ -145,7 +201,8 @@ class SimulationImpl final : public Simulation {
     // alone before the first step.
     float amax = length(setup_.gravity);
     if (steps_ > 0) amax = std::fmax(amax, last_max_acceleration_);
-    float dt = cfl_time_step(setup_.particle_spacing, vmax, amax, ts.cfl_number, ts.force_number, ts.max_step);
+    float dt = cfl_time_step(setup_.particle_spacing, vmax, amax, ts.cfl_number, ts.force_number,
+                             std::fmin(ts.max_step, heat_dt_limit_));
     if (dt < ts.min_step) {
       std::ostringstream s;
       s << "CFL time step " << dt << " s below the minimum " << ts.min_step << " s (max speed " << vmax
@@ -170,10 +227,22 @@ class SimulationImpl final : public Simulation {
     const DensityAt density_at{liquid, rigid, Exec::ptr(units_), Exec::ptr(rigid_volume_), kernel_, particle_mass_,
                                setup_.liquid.rest_density};
     exec_.parallel_for(n, ComputeDensity{density_at, Exec::ptr(density_)});
+    exec_.parallel_for(n, ComputeSurfaceArea{liquid, Exec::ptr(units_), Exec::ptr(density_), particle_mass_, rigid,
+                                             Exec::ptr(rigid_volume_), rigid_position_.size() > 0, kernel_,
+                                             area_calibration_, Exec::ptr(surface_area_)});
+    exec_.synchronize();
+    double other = seconds_since(t1);
+
+    auto th = Clock::now();
+    if (setup_.heat_conduction) conduct_heat(dt, liquid, rigid);
+    exec_.synchronize();
+    report.seconds_heat = seconds_since(th);
+
+    t1 = Clock::now();
     // Alg. 1 line 5: external forces.
     exec_.parallel_for(n, SetGravity{setup_.gravity, Exec::ptr(nonpressure_acc_)});
     exec_.synchronize();
-    double other = seconds_since(t1);
+    other += seconds_since(t1);
 
     auto t2 = Clock::now();
     solve_pressure(dt, liquid, rigid, report);  // Alg. 1 line 6
@@ -278,8 +347,12 @@ class SimulationImpl final : public Simulation {
   Buffer<std::uint32_t> id_, id_tmp_;
   Buffer<MassUnits> units_, units_tmp_;
   Buffer<float> temperature_, temperature_tmp_, density_, pressure_, density_error_;
+  Buffer<float> surface_area_, liquid_rate_;
   Buffer<Vec3> rigid_position_;
-  Buffer<float> rigid_volume_;
+  Buffer<float> rigid_volume_, rigid_temperature_, rigid_rate_;
+  Buffer<std::uint8_t> rigid_held_;
+  float area_calibration_ = 1;
+  float heat_dt_limit_ = 1e30f;
   std::int64_t steps_ = 0;
   double time_ = 0;
   float last_max_acceleration_ = 0;

@@ -44,12 +44,14 @@ void write_particle_frame(const std::filesystem::path& file, const ParticleSnaps
   ply.add("temperature", PlyType::Float32, column(n, [&](std::size_t i) { return p.temperature[i]; }));
   ply.add("density", PlyType::Float32, column(n, [&](std::size_t i) { return p.density[i]; }));
   ply.add("pressure", PlyType::Float32, column(n, [&](std::size_t i) { return p.pressure[i]; }));
+  ply.add("surface_area", PlyType::Float32, column(n, [&](std::size_t i) { return p.surface_area[i]; }));
   ply.add("id", PlyType::UInt32, column(n, [&](std::size_t i) { return p.id[i]; }));
   write_ply(file, ply);
 }
 
 void write_rigid_particles(const std::filesystem::path& file, const std::vector<Vec3>& position,
-                           const std::vector<float>& volume, const std::string& comment) {
+                           const std::vector<float>& volume, const std::vector<float>& temperature,
+                           const std::string& comment) {
   PlyData ply;
   ply.comments.push_back(comment);
   const std::size_t n = position.size();
@@ -58,6 +60,7 @@ void write_rigid_particles(const std::filesystem::path& file, const std::vector<
   ply.add("y", PlyType::Float32, column(n, [&](std::size_t i) { return position[i].y; }));
   ply.add("z", PlyType::Float32, column(n, [&](std::size_t i) { return position[i].z; }));
   ply.add("volume", PlyType::Float32, column(n, [&](std::size_t i) { return volume[i]; }));
+  ply.add("temperature", PlyType::Float32, column(n, [&](std::size_t i) { return temperature[i]; }));
   write_ply(file, ply);
 }
 

@@ -17,7 +17,8 @@ std::string frame_file_name(const std::string& kind, int frame, const std::strin
 void write_particle_frame(const std::filesystem::path& file, const ParticleSnapshot& particles, float particle_radius,
                           const std::string& comment);
 void write_rigid_particles(const std::filesystem::path& file, const std::vector<Vec3>& position,
-                           const std::vector<float>& volume, const std::string& comment);
+                           const std::vector<float>& volume, const std::vector<float>& temperature,
+                           const std::string& comment);
 
 struct FrameEntry {
   int index = 0;

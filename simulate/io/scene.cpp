@@ -32,6 +32,9 @@ bool inside(const Vec3d& p, const Vec3d& lo, const Vec3d& hi) {
 LiquidSettings read_liquid(JsonObject o) {
   LiquidSettings l;
   l.rest_density_kg_m3 = positive(o, "rest_density_kg_m3", o.number("rest_density_kg_m3", l.rest_density_kg_m3));
+  l.conductivity_w_mk = o.number("conductivity_w_mk", l.conductivity_w_mk);
+  if (l.conductivity_w_mk < 0) throw o.error("conductivity_w_mk", "expected a non-negative number");
+  l.specific_heat_j_kgk = positive(o, "specific_heat_j_kgk", o.number("specific_heat_j_kgk", l.specific_heat_j_kgk));
   l.xsph_epsilon = o.number("xsph_epsilon", l.xsph_epsilon);
   l.boundary_friction = o.number("boundary_friction", l.boundary_friction);
   l.temperature_k = kelvin_from_celsius(o, "temperature_c", o.number("temperature_c", 20));
@@ -97,8 +100,17 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
     rigid.mesh = mesh.is_absolute() ? mesh : (scene_dir / mesh).lexically_normal();
     if (!std::ifstream(rigid.mesh)) throw r.error("mesh", "cannot read mesh file " + rigid.mesh.string());
     rigid.temperature_k = kelvin_from_celsius(r, "temperature_c", r.number("temperature_c", 20));
+    rigid.hold_temperature = r.boolean("hold_temperature", false);
     r.finish();
     s.rigids.push_back(rigid);
+  }
+  if (auto m = o.optional_object("rigid_material")) {
+    s.rigid_material.density_kg_m3 = positive(*m, "density_kg_m3", m->number("density_kg_m3", s.rigid_material.density_kg_m3));
+    s.rigid_material.conductivity_w_mk = m->number("conductivity_w_mk", s.rigid_material.conductivity_w_mk);
+    if (s.rigid_material.conductivity_w_mk < 0) throw m->error("conductivity_w_mk", "expected a non-negative number");
+    s.rigid_material.specific_heat_j_kgk =
+        positive(*m, "specific_heat_j_kgk", m->number("specific_heat_j_kgk", s.rigid_material.specific_heat_j_kgk));
+    m->finish();
   }
   o.finish();
   return s;

@@ -29,10 +29,19 @@ struct RigidObject {
   std::string name;
   std::filesystem::path mesh;  // resolved against the scene file's folder
   double temperature_k = 293.15;
+  bool hold_temperature = false;  // held at temperature_k (a heated plate, a cooled mirror)
+};
+
+struct RigidMaterialSettings {
+  double density_kg_m3 = 2500;
+  double conductivity_w_mk = 1.0;
+  double specific_heat_j_kgk = 840;
 };
 
 struct LiquidSettings {
   double rest_density_kg_m3 = 1000;
+  double conductivity_w_mk = 0.6;
+  double specific_heat_j_kgk = 4186;
   double xsph_epsilon = 0.02;
   double boundary_friction = 0.02;
   double temperature_k = 293.15;
@@ -58,6 +67,7 @@ struct SimulationSettings {
   PressureSolverSettings pressure_solver;
   std::vector<LiquidBlock> liquid_blocks;
   std::vector<RigidObject> rigids;
+  RigidMaterialSettings rigid_material;
 };
 
 struct MeshSettings {

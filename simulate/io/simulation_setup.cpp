@@ -45,6 +45,11 @@ SimulationSetup make_simulation_setup(const Scene& scene) {
   setup.max_speed = static_cast<float>(s.max_speed_m_s);
   setup.liquid.rest_density = static_cast<float>(s.liquid.rest_density_kg_m3);
   setup.liquid.xsph_epsilon = static_cast<float>(s.liquid.xsph_epsilon);
+  setup.liquid.conductivity = static_cast<float>(s.liquid.conductivity_w_mk);
+  setup.liquid.specific_heat = static_cast<float>(s.liquid.specific_heat_j_kgk);
+  setup.rigid.density = static_cast<float>(s.rigid_material.density_kg_m3);
+  setup.rigid.conductivity = static_cast<float>(s.rigid_material.conductivity_w_mk);
+  setup.rigid.specific_heat = static_cast<float>(s.rigid_material.specific_heat_j_kgk);
   setup.liquid.boundary_friction = static_cast<float>(s.liquid.boundary_friction);
   setup.liquid.temperature = static_cast<float>(s.liquid.temperature_k);
   for (const LiquidBlock& block : s.liquid_blocks) {
@@ -56,6 +61,8 @@ SimulationSetup make_simulation_setup(const Scene& scene) {
     TriangleMesh mesh = load_triangle_mesh(rigid.mesh);
     std::vector<Vec3> samples = sample_surface(mesh.positions, mesh.triangles, setup.particle_spacing);
     setup.rigid_position.insert(setup.rigid_position.end(), samples.begin(), samples.end());
+    setup.rigid_temperature.insert(setup.rigid_temperature.end(), samples.size(), static_cast<float>(rigid.temperature_k));
+    setup.rigid_held.insert(setup.rigid_held.end(), samples.size(), rigid.hold_temperature ? 1 : 0);
   }
   return setup;
 }

@@ -65,7 +65,7 @@ TEST_F(SimulateCli, WritesFramesAndManifest) {
   EXPECT_EQ(m.scene_file, fs::absolute(scene).lexically_normal());
   io::PlyData p = io::read_ply(work_ / "out/frames" / m.frames[2].particles_file);
   EXPECT_EQ(p.vertex_count, 216u);
-  for (const char* name : {"x", "y", "z", "vx", "vy", "vz", "weight", "radius", "temperature", "density", "pressure", "id"})
+  for (const char* name : {"x", "y", "z", "vx", "vy", "vz", "weight", "radius", "temperature", "density", "pressure", "surface_area", "id"})
     EXPECT_NE(p.find(name), nullptr) << name;
   // Falling liquid: after 0.1 s every particle has moved down.
   io::PlyData p0 = io::read_ply(work_ / "out/frames" / m.frames[0].particles_file);

@@ -4,22 +4,24 @@
 // paper uses for its particles (Sec. 4.1). Two liquid-liquid forces act
 // between neighbours i, j: cohesion, a short-range pair potential that pulls
 // particles at mid distances together and pushes very close ones apart, and
-// a curvature term, which moves particles so as to even out their surface
-// normals and so shrinks the surface. Liquid-boundary adhesion pulls liquid
-// particles towards rigid boundary particles (Akinci 2012 sampling).
+// a curvature term on the difference of neighbouring surface normals
+// (Akinci's surface-area minimisation). Liquid-boundary adhesion pulls
+// liquid particles towards rigid boundary particles (Akinci 2012 sampling).
 //
 // Units. Lengths in m, masses in kg, densities in kg/m^3; the functors yield
 // accelerations in m/s^2. Both kernels C and A are in m^-3. The model is
 // dimensionally loose, as published: one coefficient gamma scales the
 // cohesion acceleration gamma m_j C (gamma in m^4 kg^-1 s^-2) and the
 // curvature acceleration gamma (n_i - n_j) with dimensionless normals (gamma
-// in m s^-2). gamma and beta are therefore tuned per resolution, and the
-// numbers are meaningful for the SI quantities stated here.
+// in m s^-2). gamma and beta are therefore tuned per resolution (for the
+// same effective surface tension and rest density both scale about as
+// 1 / h^2), and the numbers are meaningful for the SI quantities stated here.
 //
 // Adaptive masses (paper Sec. 4.1): particles carry m_i = w_i m. The paper
 // (Akinci) assumes equal masses; where its formula has m_i in a pair force
 // that must be antisymmetric, the pair's harmonic mean mass is used instead
 // (see curvature_mass_ratio).
+#include <cstddef>
 #include <cstdint>
 
 #include "backend/host_device.h"
@@ -37,13 +39,13 @@ namespace dp {
 // Positive values attract. The inner branch turns repulsive below the root
 // of 2 (h - r)^3 r^3 = h^6 / 64, which keeps clustering particles apart
 // even where a clamped pressure does not.
-struct CohesionKernel {
+struct AkinciCohesionKernel {
   float h;
   float scale;  // 32 / (pi h^9)
 
-  DP_HD static CohesionKernel with_support(float h) {
+  DP_HD static AkinciCohesionKernel with_support(float h) {
     float h3 = h * h * h;
-    return CohesionKernel{h, 32.0f / (3.14159265358979f * h3 * h3 * h3)};
+    return AkinciCohesionKernel{h, 32.0f / (3.14159265358979f * h3 * h3 * h3)};
   }
 
   DP_HD float C(float r) const {
@@ -59,14 +61,14 @@ struct CohesionKernel {
 // Akinci 2013, Eq. 7:
 //   A(r) = 0.007 / h^3.25 * (-4 r^2 / h + 6 r - 2 h)^(1/4)   for h/2 < r <= h
 //          0                                                otherwise.
-// It vanishes at both ends of its range and peaks at r = 3h/4, so a liquid
-// particle is drawn to a wall distance where it does not overlap the
-// boundary particles.
-struct AdhesionKernel {
+// It attracts only between h/2 and h, most strongly at r = 3h/4: closer in,
+// the boundary's pressure acts alone, so adhesion draws liquid to the wall
+// without pressing it into the boundary particles.
+struct AkinciAdhesionKernel {
   float h;
   float scale;  // 0.007 / h^3.25
 
-  DP_HD static AdhesionKernel with_support(float h) { return AdhesionKernel{h, 0.007f / powf(h, 3.25f)}; }
+  DP_HD static AkinciAdhesionKernel with_support(float h) { return AkinciAdhesionKernel{h, 0.007f / powf(h, 3.25f)}; }
 
   DP_HD float A(float r) const {
     if (2.0f * r <= h || r > h) return 0.0f;
@@ -77,14 +79,14 @@ struct AdhesionKernel {
   }
 };
 
-// Correction factor of Akinci 2013, Eq. 4: K_ij = 2 rho0 / (rho_i + rho_j).
+// Correction factor of Akinci 2013, Eq. 5: K_ij = 2 rho0 / (rho_i + rho_j).
 // Particles at the surface lack neighbours, so their densities are low and
 // K_ij > 1 amplifies the forces there, where surface tension belongs.
 DP_HD inline float surface_deficiency_factor(float rest_density, float density_i, float density_j) {
   return 2.0f * rest_density / (density_i + density_j);
 }
 
-// The curvature force of Akinci 2013, Eq. 3, is -gamma m_i (n_i - n_j):
+// The curvature force of Akinci 2013, Eq. 4, is -gamma m_i (n_i - n_j):
 // with unequal masses the forces on i and on j would not be opposite, and
 // the liquid would gain momentum from nothing. The pair's harmonic mean
 // 2 m_i m_j / (m_i + m_j) replaces m_i; it equals m_i for equal masses (the
@@ -93,9 +95,11 @@ DP_HD inline float surface_deficiency_factor(float rest_density, float density_i
 // for an acceleration.
 DP_HD inline float curvature_mass_ratio(float mass_i, float mass_j) { return 2.0f * mass_j / (mass_i + mass_j); }
 
-// Akinci 2013, Eq. 5: n_i = h sum_j (m_j / rho_j) grad W_ij, the colour
+// Akinci 2013, Eq. 3: n_i = h sum_j (m_j / rho_j) grad W_ij, the colour
 // field's gradient scaled by the support radius so that |n| is of order 1 at
-// the surface and near 0 inside. It points out of the liquid.
+// the surface and near 0 inside. As published it points into the liquid
+// (grad_i W_ij points from i towards j); the curvature term is written for
+// that orientation, and with the opposite one the liquid tears into clumps.
 struct ComputeSurfaceNormal {
   GridView liquid;          // sorted liquid positions
   const MassUnits* units;   // w_j, in mass units, sorted like the positions
@@ -124,7 +128,7 @@ struct SurfaceTensionParameters {
 };
 
 // Cohesion plus curvature, summed over liquid neighbours (Akinci 2013,
-// Eq. 1-4), and adhesion to boundary particles (Eq. 6), as one acceleration:
+// Eq. 1-5), and adhesion to boundary particles (Eq. 6), as one acceleration:
 //   a_i = sum_j K_ij (-gamma m_j C(r_ij) x_ij / r_ij - gamma (2 m_j / (m_i + m_j)) (n_i - n_j))
 //       + sum_b -beta_b Psi_b A(r_ib) x_ib / r_ib,        Psi_b = rho0 V_b.
 // Writes acceleration[i] (the surface tension contribution only; the step
@@ -140,11 +144,11 @@ struct ComputeSurfaceTensionAcceleration {
   SurfaceTensionParameters p;
   Vec3* acceleration;           // m/s^2
 
-  DP_HD Vec3 liquid_part(std::size_t i) const {
+  DP_HD Vec3 cohesion_and_curvature(std::size_t i) const {
     const Vec3 xi = liquid.position[i], ni = normal[i];
     const float h2 = p.kernel.h * p.kernel.h;
     const float mi = p.particle_mass * weight_of(units[i]), rhoi = density[i];
-    const CohesionKernel cohesion = CohesionKernel::with_support(p.kernel.h);
+    const AkinciCohesionKernel cohesion = AkinciCohesionKernel::with_support(p.kernel.h);
     Vec3 a{};
     liquid.for_each_near(xi, [&](std::uint32_t j) {
       Vec3 xij = xi - liquid.position[j];
@@ -162,10 +166,10 @@ struct ComputeSurfaceTensionAcceleration {
     return a;
   }
 
-  DP_HD Vec3 adhesion_part(std::size_t i) const {
+  DP_HD Vec3 adhesion_to_boundary(std::size_t i) const {
     const Vec3 xi = liquid.position[i];
     const float h2 = p.kernel.h * p.kernel.h;
-    const AdhesionKernel adhesion = AdhesionKernel::with_support(p.kernel.h);
+    const AkinciAdhesionKernel adhesion = AkinciAdhesionKernel::with_support(p.kernel.h);
     Vec3 a{};
     rigid.for_each_near(xi, [&](std::uint32_t b) {
       Vec3 xib = xi - rigid.position[b];
@@ -178,7 +182,7 @@ struct ComputeSurfaceTensionAcceleration {
     return a;
   }
 
-  DP_HD void operator()(std::size_t i) const { acceleration[i] = liquid_part(i) + adhesion_part(i); }
+  DP_HD void operator()(std::size_t i) const { acceleration[i] = cohesion_and_curvature(i) + adhesion_to_boundary(i); }
 };
 
 }  // namespace dp
