@@ -17,6 +17,7 @@ struct LiquidMaterial {
   float conductivity = 0.6f;        // kappa, W/(m K), water
   float specific_heat = 4186.0f;    // C, J/(kg K), water
   float xsph_epsilon = 0.02f;       // XSPH viscosity between liquid particles
+  float surface_tension = 0.0f;     // gamma of Akinci et al. 2013 (0: none)
   float boundary_friction = 0.02f;  // XSPH friction against rigid particles
   float temperature = 293.15f;      // K
 };
@@ -57,9 +58,11 @@ struct SimulationSetup {
   bool heat_conduction = true;
   std::vector<Vec3> liquid_position, liquid_velocity;
   std::vector<float> liquid_temperature;  // K, per particle; empty: liquid.temperature
+  std::vector<std::uint32_t> liquid_units;  // mass units (sph/mass_units.h) per particle; empty: full particles
   std::vector<Vec3> rigid_position;       // static boundary particles
   std::vector<float> rigid_temperature;   // K, per rigid particle
   std::vector<std::uint8_t> rigid_held;   // 1: held at its temperature (a heated plate)
+  std::vector<float> rigid_adhesion;      // beta of Akinci et al. 2013 per rigid particle; empty: none
 
   float support_radius() const { return 2.0f * particle_spacing; }
   float particle_mass() const {

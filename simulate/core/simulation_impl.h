@@ -7,12 +7,14 @@
 #include <utility>
 
 #include "simulation.h"
+#include "sph/adaptivity_winchenbach2017_driver.h"
 #include "sph/boundary_akinci2012.h"
 #include "sph/density.h"
 #include "sph/heat_cleary_monaghan1999.h"
 #include "sph/particle_grid.h"
 #include "sph/pcisph_solenthaler2009.h"
 #include "sph/surface_area_orthmann2013.h"
+#include "sph/surface_tension_akinci2013.h"
 #include "sph/time_step.h"
 #include "sph/viscosity_xsph.h"
 
@@ -33,10 +35,19 @@ struct IsUnstable {
   }
 };
 
-struct SetGravity {
+// Gravity plus the other non-pressure accelerations (surface tension and
+// adhesion), when there are any.
+struct SetNonPressureAcceleration {
   Vec3 gravity;
+  const Vec3* other;  // may be null
   Vec3* acceleration;
-  DP_HD void operator()(std::size_t i) const { acceleration[i] = gravity; }
+  DP_HD void operator()(std::size_t i) const { acceleration[i] = other ? gravity + other[i] : gravity; }
+};
+
+struct IsLighterThan {
+  const MassUnits* units;
+  MassUnits threshold;
+  DP_HD bool operator()(std::size_t i) const { return units[i] < threshold; }
 };
 
 struct TotalAcceleration {
@@ -71,15 +82,19 @@ class SimulationImpl final : public Simulation {
     grid.nz = static_cast<int>(std::ceil(extent.z / grid.cell_size)) + 1;
     liquid_grid_.grid = grid;
     rigid_grid_.grid = grid;
+    adaptivity_ = MassAdaptivity<Exec>(grid);
+    adaptivity_params_.search_radius = setup.support_radius();
 
     const std::size_t n = setup.liquid_position.size();
     std::vector<std::uint32_t> ids(n);
     for (std::size_t i = 0; i < n; ++i) ids[i] = static_cast<std::uint32_t>(i);
-    Exec::upload(position_, setup.liquid_position);
-    Exec::upload(velocity_, setup.liquid_velocity);
-    Exec::upload(id_, ids);
-    Exec::upload(units_, std::vector<MassUnits>(n, kFullParticleUnits));
-    Exec::upload(temperature_, setup.liquid_temperature.size() == n ? setup.liquid_temperature
+    Exec::upload(liquid_.position, setup.liquid_position);
+    Exec::upload(liquid_.velocity, setup.liquid_velocity);
+    Exec::upload(liquid_.id, ids);
+    Exec::upload(liquid_.units, setup.liquid_units.size() == n ? setup.liquid_units
+                                                               : std::vector<MassUnits>(n, kFullParticleUnits));
+    liquid_.extra_count = 0;
+    Exec::upload(liquid_.temperature, setup.liquid_temperature.size() == n ? setup.liquid_temperature
                                                                       : std::vector<float>(n, setup.liquid.temperature));
     resize_scratch(n);
     prepare_rigids(setup);
@@ -101,13 +116,13 @@ class SimulationImpl final : public Simulation {
 
   ParticleSnapshot particles() const override {
     ParticleSnapshot s;
-    s.position = Exec::download(position_);
-    s.velocity = Exec::download(velocity_);
+    s.position = Exec::download(liquid_.position);
+    s.velocity = Exec::download(liquid_.velocity);
     s.density = Exec::download(density_);
     s.pressure = Exec::download(pressure_);
-    s.id = Exec::download(id_);
-    s.mass_units = Exec::download(units_);
-    s.temperature = Exec::download(temperature_);
+    s.id = Exec::download(liquid_.id);
+    s.mass_units = Exec::download(liquid_.units);
+    s.temperature = Exec::download(liquid_.temperature);
     s.surface_area = Exec::download(surface_area_);
     s.weight.resize(s.size());
     for (std::size_t i = 0; i < s.size(); ++i) s.weight[i] = weight_of(s.mass_units[i]);
@@ -125,7 +140,8 @@ class SimulationImpl final : public Simulation {
   static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
   void resize_scratch(std::size_t n) {
-    for (auto* b : {&position_tmp_, &velocity_tmp_, &predicted_, &nonpressure_acc_, &pressure_acc_}) b->resize(n);
+    for (auto* b : {&position_tmp_, &velocity_tmp_, &predicted_, &nonpressure_acc_, &pressure_acc_, &normal_, &tension_acc_})
+      b->resize(n);
     for (auto* b : {&temperature_tmp_, &density_, &pressure_, &density_error_, &surface_area_, &liquid_rate_}) b->resize(n);
     id_tmp_.resize(n);
     units_tmp_.resize(n);
@@ -154,6 +170,12 @@ class SimulationImpl final : public Simulation {
     rigid_rate_.resize(m);
     exec_.parallel_for(m, Gather<float>{order, Exec::ptr(temperature), Exec::ptr(rigid_temperature_)});
     exec_.parallel_for(m, Gather<std::uint8_t>{order, Exec::ptr(held), Exec::ptr(rigid_held_)});
+
+    Buffer<float> adhesion;
+    Exec::upload(adhesion, setup.rigid_adhesion.size() == m ? setup.rigid_adhesion : std::vector<float>(m, 0.0f));
+    rigid_adhesion_.resize(m);
+    exec_.parallel_for(m, Gather<float>{order, Exec::ptr(adhesion), Exec::ptr(rigid_adhesion_)});
+    for (float beta : setup.rigid_adhesion) has_adhesion_ = has_adhesion_ || beta > 0;
   }
 
   // Explicit heat conduction is stable below rho C h^2 / (24 kappa) for each
@@ -176,10 +198,10 @@ class SimulationImpl final : public Simulation {
   // Alg. 1 line 4: conduction liquid<->liquid, liquid<->rigid, rigid<->rigid
   // (Cleary & Monaghan 1999, paper Eq. 9), explicit in time.
   void conduct_heat(float dt, const GridView& liquid, const GridView& rigid) {
-    const std::size_t n = position_.size(), m = rigid_position_.size();
+    const std::size_t n = liquid_.position.size(), m = rigid_position_.size();
     const LiquidMaterial& l = setup_.liquid;
     const RigidMaterial& r = setup_.rigid;
-    const ThermalParticles liquid_set = ThermalParticles::liquid(liquid, Exec::ptr(temperature_), Exec::ptr(units_),
+    const ThermalParticles liquid_set = ThermalParticles::liquid(liquid, Exec::ptr(liquid_.temperature), Exec::ptr(liquid_.units),
                                                                  Exec::ptr(density_), particle_mass_, l.conductivity,
                                                                  l.specific_heat);
     const ThermalParticles rigid_set = ThermalParticles::rigid(rigid, Exec::ptr(rigid_temperature_), Exec::ptr(rigid_volume_),
@@ -188,15 +210,15 @@ class SimulationImpl final : public Simulation {
     // updates: the exchange between the sets stays antisymmetric.
     exec_.parallel_for(n, ComputeTemperatureRate{liquid_set, rigid_set, m > 0, kernel_, Exec::ptr(liquid_rate_)});
     exec_.parallel_for(m, ComputeTemperatureRate{rigid_set, liquid_set, n > 0, kernel_, Exec::ptr(rigid_rate_)});
-    exec_.parallel_for(n, IntegrateTemperature{Exec::ptr(liquid_rate_), nullptr, dt, Exec::ptr(temperature_)});
+    exec_.parallel_for(n, IntegrateTemperature{Exec::ptr(liquid_rate_), nullptr, dt, Exec::ptr(liquid_.temperature)});
     exec_.parallel_for(m, IntegrateTemperature{Exec::ptr(rigid_rate_), Exec::ptr(rigid_held_), dt, Exec::ptr(rigid_temperature_)});
   }
 
   float next_time_step() const {
     const TimeStepSettings& ts = setup_.time_step;
     if (ts.mode == TimeStepMode::Fixed) return ts.max_step;
-    const std::size_t n = position_.size();
-    float vmax = exec_.max(n, SpeedOf{Exec::ptr(velocity_)}, 0.0f);
+    const std::size_t n = liquid_.position.size();
+    float vmax = exec_.max(n, SpeedOf{Exec::ptr(liquid_.velocity)}, 0.0f);
     // The last step's total acceleration bounds the next one's; gravity
     // alone before the first step.
     float amax = length(setup_.gravity);
@@ -221,13 +243,13 @@ class SimulationImpl final : public Simulation {
     report.seconds_neighbours = seconds_since(t0);
 
     auto t1 = Clock::now();
-    const std::size_t n = position_.size();
-    const GridView liquid = liquid_grid_.view(position_);
+    const std::size_t n = liquid_.position.size();
+    const GridView liquid = liquid_grid_.view(liquid_.position);
     const GridView rigid = rigid_grid_.view(rigid_position_);
-    const DensityAt density_at{liquid, rigid, Exec::ptr(units_), Exec::ptr(rigid_volume_), kernel_, particle_mass_,
+    const DensityAt density_at{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(rigid_volume_), kernel_, particle_mass_,
                                setup_.liquid.rest_density};
     exec_.parallel_for(n, ComputeDensity{density_at, Exec::ptr(density_)});
-    exec_.parallel_for(n, ComputeSurfaceArea{liquid, Exec::ptr(units_), Exec::ptr(density_), particle_mass_, rigid,
+    exec_.parallel_for(n, ComputeSurfaceArea{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), particle_mass_, rigid,
                                              Exec::ptr(rigid_volume_), rigid_position_.size() > 0, kernel_,
                                              area_calibration_, Exec::ptr(surface_area_)});
     exec_.synchronize();
@@ -239,8 +261,19 @@ class SimulationImpl final : public Simulation {
     report.seconds_heat = seconds_since(th);
 
     t1 = Clock::now();
-    // Alg. 1 line 5: external forces.
-    exec_.parallel_for(n, SetGravity{setup_.gravity, Exec::ptr(nonpressure_acc_)});
+    // Alg. 1 line 5: external forces; surface tension and adhesion after
+    // Akinci et al. 2013.
+    const bool tension = setup_.liquid.surface_tension > 0 || has_adhesion_;
+    if (tension) {
+      exec_.parallel_for(n, ComputeSurfaceNormal{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), kernel_,
+                                                 particle_mass_, Exec::ptr(normal_)});
+      const SurfaceTensionParameters st{kernel_, particle_mass_, setup_.liquid.rest_density, setup_.liquid.surface_tension};
+      exec_.parallel_for(n, ComputeSurfaceTensionAcceleration{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(density_),
+                                                              Exec::ptr(normal_), Exec::ptr(rigid_volume_),
+                                                              Exec::ptr(rigid_adhesion_), st, Exec::ptr(tension_acc_)});
+    }
+    exec_.parallel_for(n, SetNonPressureAcceleration{setup_.gravity, tension ? Exec::ptr(tension_acc_) : nullptr,
+                                                     Exec::ptr(nonpressure_acc_)});
     exec_.synchronize();
     other += seconds_since(t1);
 
@@ -250,16 +283,17 @@ class SimulationImpl final : public Simulation {
     report.seconds_pressure = seconds_since(t2);
 
     auto t3 = Clock::now();
-    exec_.parallel_for(n, IntegrateMotion{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_), dt, Exec::ptr(velocity_),
-                                          Exec::ptr(position_)});  // Alg. 1 line 2, for the next step
-    exec_.parallel_for(n, ApplyXsph{liquid, rigid, Exec::ptr(units_), Exec::ptr(density_), Exec::ptr(rigid_volume_),
-                                    Exec::ptr(velocity_), kernel_, particle_mass_, setup_.liquid.xsph_epsilon,
+    exec_.parallel_for(n, IntegrateMotion{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_), dt, Exec::ptr(liquid_.velocity),
+                                          Exec::ptr(liquid_.position)});  // Alg. 1 line 2, for the next step
+    exec_.parallel_for(n, ApplyXsph{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(density_), Exec::ptr(rigid_volume_),
+                                    Exec::ptr(liquid_.velocity), kernel_, particle_mass_, setup_.liquid.xsph_epsilon,
                                     setup_.liquid.boundary_friction, Exec::ptr(velocity_tmp_)});
-    velocity_.swap(velocity_tmp_);
+    liquid_.velocity.swap(velocity_tmp_);
     last_max_acceleration_ = exec_.max(n, TotalAcceleration{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_)}, 0.0f);
     ++steps_;
     time_ += dt;
     check_stability();
+    adapt_masses();  // Alg. 1 line 18
     exec_.synchronize();
     report.seconds_other = other + seconds_since(t3);
     report_ = report;
@@ -269,20 +303,20 @@ class SimulationImpl final : public Simulation {
   // PCISPH: predict, correct pressures until the average density error is
   // below eta (at least min_iterations, at most max_iterations).
   void solve_pressure(float dt, const GridView& liquid, const GridView& rigid, StepReport& report) {
-    const std::size_t n = position_.size();
+    const std::size_t n = liquid_.position.size();
     const PressureSolverSettings& ps = setup_.pressure;
     const float delta = pcisph_delta(pcisph_sum_, dt, particle_mass_, setup_.liquid.rest_density);
     const GridView predicted_view{liquid.grid, liquid.cell_begin, liquid.cell_end, Exec::ptr(predicted_)};
-    const DensityAt predicted_density{predicted_view, rigid, Exec::ptr(units_), Exec::ptr(rigid_volume_), kernel_,
+    const DensityAt predicted_density{predicted_view, rigid, Exec::ptr(liquid_.units), Exec::ptr(rigid_volume_), kernel_,
                                       particle_mass_, setup_.liquid.rest_density};
     exec_.parallel_for(n, ClearPressure{Exec::ptr(pressure_), Exec::ptr(pressure_acc_)});
     int iteration = 0;
     float error = 0;
     while (iteration < ps.max_iterations) {
-      exec_.parallel_for(n, PredictPosition{Exec::ptr(position_), Exec::ptr(velocity_), Exec::ptr(nonpressure_acc_),
+      exec_.parallel_for(n, PredictPosition{Exec::ptr(liquid_.position), Exec::ptr(liquid_.velocity), Exec::ptr(nonpressure_acc_),
                                             Exec::ptr(pressure_acc_), dt, Exec::ptr(predicted_)});
       exec_.parallel_for(n, CorrectPressure{predicted_density, delta, Exec::ptr(pressure_), Exec::ptr(density_error_)});
-      exec_.parallel_for(n, ComputePressureAcceleration{liquid, rigid, Exec::ptr(units_), Exec::ptr(rigid_volume_),
+      exec_.parallel_for(n, ComputePressureAcceleration{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(rigid_volume_),
                                                         Exec::ptr(pressure_), kernel_, particle_mass_,
                                                         setup_.liquid.rest_density, Exec::ptr(pressure_acc_)});
       ++iteration;
@@ -297,30 +331,40 @@ class SimulationImpl final : public Simulation {
   // Sorting the particles themselves (not just an index) keeps neighbours
   // close in memory.
   void sort_liquid() {
-    const std::size_t n = position_.size();
-    liquid_grid_.sort(exec_, position_);
+    const std::size_t n = liquid_.position.size();
+    liquid_grid_.sort(exec_, liquid_.position);
     const std::uint32_t* order = Exec::ptr(liquid_grid_.order);
-    exec_.parallel_for(n, Gather<Vec3>{order, Exec::ptr(position_), Exec::ptr(position_tmp_)});
-    exec_.parallel_for(n, Gather<Vec3>{order, Exec::ptr(velocity_), Exec::ptr(velocity_tmp_)});
-    exec_.parallel_for(n, Gather<std::uint32_t>{order, Exec::ptr(id_), Exec::ptr(id_tmp_)});
-    exec_.parallel_for(n, Gather<MassUnits>{order, Exec::ptr(units_), Exec::ptr(units_tmp_)});
-    exec_.parallel_for(n, Gather<float>{order, Exec::ptr(temperature_), Exec::ptr(temperature_tmp_)});
-    position_.swap(position_tmp_);
-    velocity_.swap(velocity_tmp_);
-    id_.swap(id_tmp_);
-    units_.swap(units_tmp_);
-    temperature_.swap(temperature_tmp_);
+    exec_.parallel_for(n, Gather<Vec3>{order, Exec::ptr(liquid_.position), Exec::ptr(position_tmp_)});
+    exec_.parallel_for(n, Gather<Vec3>{order, Exec::ptr(liquid_.velocity), Exec::ptr(velocity_tmp_)});
+    exec_.parallel_for(n, Gather<std::uint32_t>{order, Exec::ptr(liquid_.id), Exec::ptr(id_tmp_)});
+    exec_.parallel_for(n, Gather<MassUnits>{order, Exec::ptr(liquid_.units), Exec::ptr(units_tmp_)});
+    exec_.parallel_for(n, Gather<float>{order, Exec::ptr(liquid_.temperature), Exec::ptr(temperature_tmp_)});
+    liquid_.position.swap(position_tmp_);
+    liquid_.velocity.swap(velocity_tmp_);
+    liquid_.id.swap(id_tmp_);
+    liquid_.units.swap(units_tmp_);
+    liquid_.temperature.swap(temperature_tmp_);
     liquid_grid_.find_ranges(exec_);
   }
 
+  // Merging and redistribution (paper Sec. 6.3, Eq. 18), only while some
+  // particle is lighter than the adaptivity threshold.
+  void adapt_masses() {
+    const std::size_t n = liquid_.size();
+    const auto small = static_cast<MassUnits>(adaptivity_params_.small_weight * kFullParticleUnits);
+    if (exec_.find_first(n, IsLighterThan{Exec::ptr(liquid_.units), small}) == n) return;
+    adaptivity_.adapt(exec_, liquid_, adaptivity_params_);
+    if (liquid_.size() != n) resize_scratch(liquid_.size());
+  }
+
   void check_stability() {
-    const std::size_t n = position_.size();
+    const std::size_t n = liquid_.position.size();
     float vmax = setup_.max_speed;
-    std::size_t bad = exec_.find_first(n, IsUnstable{Exec::ptr(position_), Exec::ptr(velocity_), setup_.domain_min,
+    std::size_t bad = exec_.find_first(n, IsUnstable{Exec::ptr(liquid_.position), Exec::ptr(liquid_.velocity), setup_.domain_min,
                                                      setup_.domain_max, vmax * vmax});
     if (bad == n) return;
-    Vec3 x = Exec::download(position_)[bad], v = Exec::download(velocity_)[bad];
-    std::uint32_t id = Exec::download(id_)[bad];
+    Vec3 x = Exec::download(liquid_.position)[bad], v = Exec::download(liquid_.velocity)[bad];
+    std::uint32_t id = Exec::download(liquid_.id)[bad];
     std::ostringstream detail;
     std::string quantity;
     bool finite = std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) && std::isfinite(v.x) &&
@@ -343,13 +387,18 @@ class SimulationImpl final : public Simulation {
   float particle_mass_ = 0;
   float pcisph_sum_ = 0;
   ParticleGrid<Exec> liquid_grid_, rigid_grid_;
-  Buffer<Vec3> position_, velocity_, position_tmp_, velocity_tmp_, predicted_, nonpressure_acc_, pressure_acc_;
-  Buffer<std::uint32_t> id_, id_tmp_;
-  Buffer<MassUnits> units_, units_tmp_;
-  Buffer<float> temperature_, temperature_tmp_, density_, pressure_, density_error_;
+  AdaptiveParticles<Exec> liquid_;  // the state carried from step to step
+  MassAdaptivity<Exec> adaptivity_{UniformGrid{}};
+  AdaptivityParameters adaptivity_params_;
+  Buffer<Vec3> position_tmp_, velocity_tmp_, predicted_, nonpressure_acc_, pressure_acc_;
+  Buffer<std::uint32_t> id_tmp_;
+  Buffer<MassUnits> units_tmp_;
+  Buffer<float> temperature_tmp_, density_, pressure_, density_error_;
   Buffer<float> surface_area_, liquid_rate_;
   Buffer<Vec3> rigid_position_;
-  Buffer<float> rigid_volume_, rigid_temperature_, rigid_rate_;
+  Buffer<float> rigid_volume_, rigid_temperature_, rigid_rate_, rigid_adhesion_;
+  Buffer<Vec3> normal_, tension_acc_;
+  bool has_adhesion_ = false;
   Buffer<std::uint8_t> rigid_held_;
   float area_calibration_ = 1;
   float heat_dt_limit_ = 1e30f;

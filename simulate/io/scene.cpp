@@ -36,6 +36,8 @@ LiquidSettings read_liquid(JsonObject o) {
   if (l.conductivity_w_mk < 0) throw o.error("conductivity_w_mk", "expected a non-negative number");
   l.specific_heat_j_kgk = positive(o, "specific_heat_j_kgk", o.number("specific_heat_j_kgk", l.specific_heat_j_kgk));
   l.xsph_epsilon = o.number("xsph_epsilon", l.xsph_epsilon);
+  l.surface_tension = o.number("surface_tension", l.surface_tension);
+  if (l.surface_tension < 0) throw o.error("surface_tension", "expected a non-negative number");
   l.boundary_friction = o.number("boundary_friction", l.boundary_friction);
   l.temperature_k = kelvin_from_celsius(o, "temperature_c", o.number("temperature_c", 20));
   // XSPH blends towards the neighbours' mean velocity: beyond 1 it overshoots.
@@ -101,6 +103,8 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
     if (!std::ifstream(rigid.mesh)) throw r.error("mesh", "cannot read mesh file " + rigid.mesh.string());
     rigid.temperature_k = kelvin_from_celsius(r, "temperature_c", r.number("temperature_c", 20));
     rigid.hold_temperature = r.boolean("hold_temperature", false);
+    rigid.adhesion = r.number("adhesion", 0);
+    if (rigid.adhesion < 0) throw r.error("adhesion", "expected a non-negative number");
     r.finish();
     s.rigids.push_back(rigid);
   }

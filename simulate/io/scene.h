@@ -30,6 +30,7 @@ struct RigidObject {
   std::filesystem::path mesh;  // resolved against the scene file's folder
   double temperature_k = 293.15;
   bool hold_temperature = false;  // held at temperature_k (a heated plate, a cooled mirror)
+  double adhesion = 0;            // beta of Akinci et al. 2013
 };
 
 struct RigidMaterialSettings {
@@ -43,6 +44,7 @@ struct LiquidSettings {
   double conductivity_w_mk = 0.6;
   double specific_heat_j_kgk = 4186;
   double xsph_epsilon = 0.02;
+  double surface_tension = 0;  // gamma of Akinci et al. 2013
   double boundary_friction = 0.02;
   double temperature_k = 293.15;
 };

@@ -46,6 +46,7 @@ SimulationSetup make_simulation_setup(const Scene& scene) {
   setup.liquid.rest_density = static_cast<float>(s.liquid.rest_density_kg_m3);
   setup.liquid.xsph_epsilon = static_cast<float>(s.liquid.xsph_epsilon);
   setup.liquid.conductivity = static_cast<float>(s.liquid.conductivity_w_mk);
+  setup.liquid.surface_tension = static_cast<float>(s.liquid.surface_tension);
   setup.liquid.specific_heat = static_cast<float>(s.liquid.specific_heat_j_kgk);
   setup.rigid.density = static_cast<float>(s.rigid_material.density_kg_m3);
   setup.rigid.conductivity = static_cast<float>(s.rigid_material.conductivity_w_mk);
@@ -63,6 +64,7 @@ SimulationSetup make_simulation_setup(const Scene& scene) {
     setup.rigid_position.insert(setup.rigid_position.end(), samples.begin(), samples.end());
     setup.rigid_temperature.insert(setup.rigid_temperature.end(), samples.size(), static_cast<float>(rigid.temperature_k));
     setup.rigid_held.insert(setup.rigid_held.end(), samples.size(), rigid.hold_temperature ? 1 : 0);
+    setup.rigid_adhesion.insert(setup.rigid_adhesion.end(), samples.size(), static_cast<float>(rigid.adhesion));
   }
   return setup;
 }
