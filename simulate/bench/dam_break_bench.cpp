@@ -1,0 +1,121 @@
+// dewpoint-bench-dam-break: time per step of the liquid simulation on a dam
+// break of a chosen size, split as the step reports it (neighbour search,
+// pressure solve, heat, the rest), with PCISPH iterations. Depends only on
+// the simulator core, so it also runs on a bare CUDA machine.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "simulation.h"
+
+namespace {
+
+struct Options {
+  long particles = 100000;
+  int steps = 20;
+  int warmup = 5;
+  std::string device = "cpu";
+  int threads = 0;
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    auto next = [&]() -> const char* {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "dewpoint-bench-dam-break: %s needs a value\n", a.c_str());
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--particles") o.particles = std::atol(next());
+    else if (a == "--steps") o.steps = std::atoi(next());
+    else if (a == "--warmup") o.warmup = std::atoi(next());
+    else if (a == "--device") o.device = next();
+    else if (a == "--threads") o.threads = std::atoi(next());
+    else {
+      std::fprintf(stderr, "usage: dewpoint-bench-dam-break [--particles N] [--steps N] [--warmup N] [--device cpu|cuda] [--threads N]\n");
+      std::exit(a == "--help" ? 0 : 2);
+    }
+  }
+  return o;
+}
+
+// A column of width a, height 2a and depth a/2 in a tank 4a long, at the
+// spacing that gives about the requested particle count.
+dp::SimulationSetup dam_break(long particles) {
+  const float a = 1.0f;
+  const float s = std::cbrt(a * 2 * a * 0.5f * a / static_cast<float>(particles));
+  dp::SimulationSetup setup;
+  setup.particle_spacing = s;
+  setup.liquid.xsph_epsilon = 0.01f;
+  setup.liquid.boundary_friction = 0.1f;
+  const int nx = static_cast<int>(a / s), ny = static_cast<int>(2 * a / s), nz = static_cast<int>(0.5f * a / s);
+  const float gap = 1.2f * s, lx = 4 * a, ly = 2.5f * a, lz = (nz - 1) * s + 2 * gap;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        setup.liquid_position.push_back(dp::Vec3{gap + i * s, gap + j * s, gap + k * s});
+        setup.liquid_velocity.push_back(dp::Vec3{});
+      }
+  const int mx = static_cast<int>(std::ceil(lx / s)), my = static_cast<int>(std::ceil(ly / s)), mz = static_cast<int>(std::ceil(lz / s));
+  const float dx = lx / mx, dy = ly / my, dz = lz / mz;
+  for (int k = 0; k <= mz; ++k)
+    for (int i = 0; i <= mx; ++i) setup.rigid_position.push_back(dp::Vec3{i * dx, 0, k * dz});
+  for (int j = 1; j <= my; ++j) {
+    for (int i = 0; i <= mx; ++i) {
+      setup.rigid_position.push_back(dp::Vec3{i * dx, j * dy, 0});
+      setup.rigid_position.push_back(dp::Vec3{i * dx, j * dy, lz});
+    }
+    for (int k = 1; k < mz; ++k) {
+      setup.rigid_position.push_back(dp::Vec3{0, j * dy, k * dz});
+      setup.rigid_position.push_back(dp::Vec3{lx, j * dy, k * dz});
+    }
+  }
+  setup.domain_min = dp::Vec3{-0.1f, -0.1f, -0.1f};
+  setup.domain_max = dp::Vec3{lx + 0.1f, ly + 0.5f, lz + 0.1f};
+  return setup;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o = parse(argc, argv);
+  dp::SimulationSetup setup = dam_break(o.particles);
+  try {
+    dp::ExecutionConfig exec{dp::parse_device(o.device), dp::resolve_thread_count(o.threads)};
+    auto sim = dp::make_simulation(exec, setup);
+    for (int i = 0; i < o.warmup; ++i) sim->step();
+    std::vector<double> total, neighbours, pressure, heat, other, iterations;
+    for (int i = 0; i < o.steps; ++i) {
+      auto t = std::chrono::steady_clock::now();
+      dp::StepReport r = sim->step();
+      total.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count() * 1e3);
+      neighbours.push_back(r.seconds_neighbours * 1e3);
+      pressure.push_back(r.seconds_pressure * 1e3);
+      heat.push_back(r.seconds_heat * 1e3);
+      other.push_back(r.seconds_other * 1e3);
+      iterations.push_back(r.pressure_iterations);
+    }
+    std::printf("dam break: %zu liquid + %zu rigid particles, spacing %.4g m, device %s, %d threads, %d steps after %d warm-up\n",
+                setup.liquid_position.size(), setup.rigid_position.size(), setup.particle_spacing, o.device.c_str(),
+                exec.threads, o.steps, o.warmup);
+    std::printf("median ms/step: total %.2f | neighbours %.2f | pressure %.2f (PCISPH iterations %.0f) | heat %.2f | other %.2f\n",
+                median(total), median(neighbours), median(pressure), median(iterations), median(heat), median(other));
+    std::printf("median ns per liquid particle-step: %.1f\n", median(total) * 1e6 / static_cast<double>(setup.liquid_position.size()));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "dewpoint-bench-dam-break: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
