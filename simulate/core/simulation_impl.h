@@ -239,6 +239,9 @@ class SimulationImpl final : public Simulation {
     report.dt = dt;
     auto t0 = Clock::now();
     sort_liquid();  // Alg. 1 line 3
+    // The step's neighbourhoods, found once for all pressure iterations.
+    liquid_list_ = liquid_neighbors_.build(exec_, liquid_.position, liquid_grid_.view(liquid_.position), kernel_.h);
+    rigid_list_ = rigid_neighbors_.build(exec_, liquid_.position, rigid_grid_.view(rigid_position_), kernel_.h);
     exec_.synchronize();
     report.seconds_neighbours = seconds_since(t0);
 
@@ -278,7 +281,7 @@ class SimulationImpl final : public Simulation {
     other += seconds_since(t1);
 
     auto t2 = Clock::now();
-    solve_pressure(dt, liquid, rigid, report);  // Alg. 1 line 6
+    solve_pressure(dt, report);  // Alg. 1 line 6
     exec_.synchronize();
     report.seconds_pressure = seconds_since(t2);
 
@@ -302,23 +305,27 @@ class SimulationImpl final : public Simulation {
 
   // PCISPH: predict, correct pressures until the average density error is
   // below eta (at least min_iterations, at most max_iterations).
-  void solve_pressure(float dt, const GridView& liquid, const GridView& rigid, StepReport& report) {
+  void solve_pressure(float dt, StepReport& report) {
     const std::size_t n = liquid_.position.size();
     const PressureSolverSettings& ps = setup_.pressure;
     const float delta = pcisph_delta(pcisph_sum_, dt, particle_mass_, setup_.liquid.rest_density);
-    const GridView predicted_view{liquid.grid, liquid.cell_begin, liquid.cell_end, Exec::ptr(predicted_)};
-    const DensityAt predicted_density{predicted_view, rigid, Exec::ptr(liquid_.units), Exec::ptr(rigid_volume_), kernel_,
-                                      particle_mass_, setup_.liquid.rest_density};
+    const NeighborList liquid_list = liquid_list_, rigid_list = rigid_list_;
+    const CorrectPressure correct{liquid_list, rigid_list, Exec::ptr(predicted_), Exec::ptr(rigid_position_),
+                                  Exec::ptr(liquid_.units), Exec::ptr(rigid_volume_), kernel_, particle_mass_,
+                                  setup_.liquid.rest_density, delta, Exec::ptr(pressure_), Exec::ptr(density_error_)};
+    const ComputePressureAcceleration pressure_acceleration{liquid_list, rigid_list, Exec::ptr(liquid_.position),
+                                                            Exec::ptr(rigid_position_), Exec::ptr(liquid_.units),
+                                                            Exec::ptr(rigid_volume_), Exec::ptr(pressure_), kernel_,
+                                                            particle_mass_, setup_.liquid.rest_density,
+                                                            Exec::ptr(pressure_acc_)};
     exec_.parallel_for(n, ClearPressure{Exec::ptr(pressure_), Exec::ptr(pressure_acc_)});
     int iteration = 0;
     float error = 0;
     while (iteration < ps.max_iterations) {
       exec_.parallel_for(n, PredictPosition{Exec::ptr(liquid_.position), Exec::ptr(liquid_.velocity), Exec::ptr(nonpressure_acc_),
                                             Exec::ptr(pressure_acc_), dt, Exec::ptr(predicted_)});
-      exec_.parallel_for(n, CorrectPressure{predicted_density, delta, Exec::ptr(pressure_), Exec::ptr(density_error_)});
-      exec_.parallel_for(n, ComputePressureAcceleration{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(rigid_volume_),
-                                                        Exec::ptr(pressure_), kernel_, particle_mass_,
-                                                        setup_.liquid.rest_density, Exec::ptr(pressure_acc_)});
+      exec_.parallel_for(n, correct);
+      exec_.parallel_for(n, pressure_acceleration);
       ++iteration;
       const float* e = Exec::ptr(density_error_);
       error = n > 0 ? static_cast<float>(exec_.sum(n, ValueOf{e}) / static_cast<double>(n)) : 0.0f;
@@ -389,6 +396,8 @@ class SimulationImpl final : public Simulation {
   ParticleGrid<Exec> liquid_grid_, rigid_grid_;
   AdaptiveParticles<Exec> liquid_;  // the state carried from step to step
   MassAdaptivity<Exec> adaptivity_{UniformGrid{}};
+  NeighborListBuffers<Exec> liquid_neighbors_, rigid_neighbors_;
+  NeighborList liquid_list_{}, rigid_list_{};
   AdaptivityParameters adaptivity_params_;
   Buffer<Vec3> position_tmp_, velocity_tmp_, predicted_, nonpressure_acc_, pressure_acc_;
   Buffer<std::uint32_t> id_tmp_;

@@ -34,6 +34,8 @@ class CpuExec {
   template <class T>
   static void upload(Buffer<T>& dst, const std::vector<T>& src) { dst = src; }
   template <class T>
+  static T download_one(const Buffer<T>& src, std::size_t i) { return src[i]; }
+  template <class T>
   static std::vector<T> download(const Buffer<T>& src) { return src; }
 
   // Calls f(i) for every i in [0, n).

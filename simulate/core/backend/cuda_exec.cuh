@@ -79,6 +79,8 @@ class CudaExec {
   template <class T>
   static void upload(Buffer<T>& dst, const std::vector<T>& src) { dst.assign(src.begin(), src.end()); }
   template <class T>
+  static T download_one(const Buffer<T>& src, std::size_t i) { return src[i]; }  // one element copied back
+  template <class T>
   static std::vector<T> download(const Buffer<T>& src) {
     std::vector<T> h(src.size());
     thrust::copy(src.begin(), src.end(), h.begin());

@@ -9,6 +9,7 @@
 #include "sph/density.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
+#include "sph/neighbor_list.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
@@ -38,21 +39,45 @@ struct PredictPosition {
   }
 };
 
-// The density at the predicted position, with neighbours at their predicted
-// positions (same neighbour cells as at the start of the step), clamped
-// from below at rho0 so that the free surface does not pull.
-// p_i += delta * (rho*_i - rho0); the error is kept for the average.
+// The density at the predicted positions, over the neighbours listed at the
+// start of the step (as Solenthaler & Pajarola keep the step's
+// neighbourhoods), clamped from below at rho0 so that the free surface does
+// not pull: p_i += delta * (rho*_i - rho0); the error is kept for the
+// average.
 struct CorrectPressure {
-  DensityAt predicted_density;  // its liquid GridView holds the predicted positions
+  NeighborList liquid_neighbors;  // includes i itself
+  NeighborList rigid_neighbors;
+  const Vec3* predicted;          // liquid, predicted positions
+  const Vec3* rigid_position;
+  const MassUnits* units;
+  const float* rigid_volume;
+  CubicSplineKernel kernel;
+  float particle_mass;
+  float rest_density;
   float delta;
   float* pressure;
-  float* density_error;  // (rho* - rho0) / rho0, >= 0
+  float* density_error;  // (rho* - rho0)/rho0, >= 0
+
+  DP_HD float predicted_density(std::size_t i) const {
+    const Vec3 xi = predicted[i];
+    const float h2 = kernel.h * kernel.h;
+    float liquid_part = 0.0f, rigid_part = 0.0f;
+    liquid_neighbors.for_each(i, [&](std::uint32_t j) {
+      float r2 = length_squared(xi - predicted[j]);
+      if (r2 < h2) liquid_part += weight_of(units[j]) * kernel.W(sqrtf(r2));
+    });
+    rigid_neighbors.for_each(i, [&](std::uint32_t b) {
+      float r2 = length_squared(xi - rigid_position[b]);
+      if (r2 < h2) rigid_part += rigid_volume[b] * kernel.W(sqrtf(r2));
+    });
+    return particle_mass * liquid_part + rest_density * rigid_part;
+  }
+
   DP_HD void operator()(std::size_t i) const {
-    const float rho0 = predicted_density.rest_density;
-    float rho = predicted_density(predicted_density.liquid.position[i]);
-    float error = rho > rho0 ? rho - rho0 : 0.0f;
+    float rho = predicted_density(i);
+    float error = rho > rest_density ? rho - rest_density : 0.0f;
     pressure[i] += delta * error;
-    density_error[i] = error / rho0;
+    density_error[i] = error / rest_density;
   }
 };
 
@@ -60,8 +85,10 @@ struct CorrectPressure {
 // at the current positions (Solenthaler & Pajarola use rho0 in the
 // denominators; Akinci 2012 Eq. 10 for the boundary).
 struct ComputePressureAcceleration {
-  GridView liquid;
-  GridView rigid;
+  NeighborList liquid_neighbors;
+  NeighborList rigid_neighbors;
+  const Vec3* position;
+  const Vec3* rigid_position;
   const MassUnits* units;
   const float* rigid_volume;
   const float* pressure;
@@ -70,20 +97,16 @@ struct ComputePressureAcceleration {
   float rest_density;
   Vec3* acceleration;
   DP_HD void operator()(std::size_t i) const {
-    const Vec3 xi = liquid.position[i];
-    const float h2 = kernel.h * kernel.h;
+    const Vec3 xi = position[i];
     const float inv_rho2 = 1.0f / (rest_density * rest_density);
     const float pi = pressure[i];
     Vec3 a{};
-    liquid.for_each_near(xi, [&](std::uint32_t j) {
-      Vec3 xij = xi - liquid.position[j];
-      if (j == i || length_squared(xij) >= h2) return;
-      a -= (particle_mass * weight_of(units[j]) * (pi + pressure[j]) * inv_rho2) * kernel.gradW(xij);
+    liquid_neighbors.for_each(i, [&](std::uint32_t j) {
+      if (j == i) return;
+      a -= (particle_mass * weight_of(units[j]) * (pi + pressure[j]) * inv_rho2) * kernel.gradW(xi - position[j]);
     });
-    rigid.for_each_near(xi, [&](std::uint32_t b) {
-      Vec3 xib = xi - rigid.position[b];
-      if (length_squared(xib) >= h2) return;
-      a -= (rest_density * rigid_volume[b] * pi * inv_rho2) * kernel.gradW(xib);
+    rigid_neighbors.for_each(i, [&](std::uint32_t b) {
+      a -= (rest_density * rigid_volume[b] * pi * inv_rho2) * kernel.gradW(xi - rigid_position[b]);
     });
     acceleration[i] = a;
   }
