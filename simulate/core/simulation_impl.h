@@ -249,9 +249,7 @@ class SimulationImpl final : public Simulation {
     const std::size_t n = liquid_.position.size();
     const GridView liquid = liquid_grid_.view(liquid_.position);
     const GridView rigid = rigid_grid_.view(rigid_position_);
-    const DensityAt density_at{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(rigid_volume_), kernel_, particle_mass_,
-                               setup_.liquid.rest_density};
-    exec_.parallel_for(n, ComputeDensity{density_at, Exec::ptr(density_)});
+    exec_.parallel_for(n, ComputeDensity{listed_density(Exec::ptr(liquid_.position)), Exec::ptr(density_)});
     exec_.parallel_for(n, ComputeSurfaceArea{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), particle_mass_, rigid,
                                              Exec::ptr(rigid_volume_), rigid_position_.size() > 0, kernel_,
                                              area_calibration_, Exec::ptr(surface_area_)});
@@ -288,7 +286,8 @@ class SimulationImpl final : public Simulation {
     auto t3 = Clock::now();
     exec_.parallel_for(n, IntegrateMotion{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_), dt, Exec::ptr(liquid_.velocity),
                                           Exec::ptr(liquid_.position)});  // Alg. 1 line 2, for the next step
-    exec_.parallel_for(n, ApplyXsph{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(density_), Exec::ptr(rigid_volume_),
+    exec_.parallel_for(n, ApplyXsph{liquid_list_, rigid_list_, Exec::ptr(liquid_.position), Exec::ptr(rigid_position_),
+                                    Exec::ptr(liquid_.units), Exec::ptr(density_), Exec::ptr(rigid_volume_),
                                     Exec::ptr(liquid_.velocity), kernel_, particle_mass_, setup_.liquid.xsph_epsilon,
                                     setup_.liquid.boundary_friction, Exec::ptr(velocity_tmp_)});
     liquid_.velocity.swap(velocity_tmp_);
@@ -305,14 +304,18 @@ class SimulationImpl final : public Simulation {
 
   // PCISPH: predict, correct pressures until the average density error is
   // below eta (at least min_iterations, at most max_iterations).
+  ListedDensity listed_density(const Vec3* position) const {
+    return ListedDensity{liquid_list_, rigid_list_, position, Exec::ptr(rigid_position_), Exec::ptr(liquid_.units),
+                         Exec::ptr(rigid_volume_), kernel_, particle_mass_, setup_.liquid.rest_density};
+  }
+
   void solve_pressure(float dt, StepReport& report) {
     const std::size_t n = liquid_.position.size();
     const PressureSolverSettings& ps = setup_.pressure;
     const float delta = pcisph_delta(pcisph_sum_, dt, particle_mass_, setup_.liquid.rest_density);
     const NeighborList liquid_list = liquid_list_, rigid_list = rigid_list_;
-    const CorrectPressure correct{liquid_list, rigid_list, Exec::ptr(predicted_), Exec::ptr(rigid_position_),
-                                  Exec::ptr(liquid_.units), Exec::ptr(rigid_volume_), kernel_, particle_mass_,
-                                  setup_.liquid.rest_density, delta, Exec::ptr(pressure_), Exec::ptr(density_error_)};
+    const CorrectPressure correct{listed_density(Exec::ptr(predicted_)), delta, Exec::ptr(pressure_),
+                                  Exec::ptr(density_error_)};
     const ComputePressureAcceleration pressure_acceleration{liquid_list, rigid_list, Exec::ptr(liquid_.position),
                                                             Exec::ptr(rigid_position_), Exec::ptr(liquid_.units),
                                                             Exec::ptr(rigid_volume_), Exec::ptr(pressure_), kernel_,

@@ -59,7 +59,7 @@ KernelResults run_kernels(int threads) {
   empty.find_ranges(exec);
   DensityAt density_at{liquid, empty.view(none), units.data(), no_volume.data(),
                        CubicSplineKernel::with_support(0.02f), 0.001f, 1000.0f};
-  exec.parallel_for(points.size(), ComputeDensity{density_at, density.data()});
+  exec.parallel_for(points.size(), [&](std::size_t i) { density[i] = density_at(sorted[i]); });
   r.density = density;
   r.sum = exec.sum(density.size(), [&](std::size_t i) { return density[i] * 1.0001f; });
   r.first = exec.find_first(density.size(), [&](std::size_t i) { return density[i] > 0.2f; });

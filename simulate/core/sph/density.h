@@ -7,6 +7,7 @@
 #include "backend/host_device.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
+#include "sph/neighbor_list.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
@@ -38,10 +39,41 @@ struct DensityAt {
   }
 };
 
+// The density of liquid particle i at `position[i]`, over the step's
+// neighbour lists (i itself included in the liquid list). With the
+// predicted positions this is PCISPH's predicted density; neighbours that
+// moved out of the support drop out by the distance test.
+struct ListedDensity {
+  NeighborList liquid_neighbors;
+  NeighborList rigid_neighbors;
+  const Vec3* position;
+  const Vec3* rigid_position;
+  const MassUnits* units;
+  const float* rigid_volume;
+  CubicSplineKernel kernel;
+  float particle_mass;
+  float rest_density;
+
+  DP_HD float operator()(std::size_t i) const {
+    const Vec3 xi = position[i];
+    const float h2 = kernel.h * kernel.h;
+    float liquid_part = 0.0f, rigid_part = 0.0f;
+    liquid_neighbors.for_each(i, [&](std::uint32_t j) {
+      float r2 = length_squared(xi - position[j]);
+      if (r2 < h2) liquid_part += weight_of(units[j]) * kernel.W(sqrtf(r2));
+    });
+    rigid_neighbors.for_each(i, [&](std::uint32_t b) {
+      float r2 = length_squared(xi - rigid_position[b]);
+      if (r2 < h2) rigid_part += rigid_volume[b] * kernel.W(sqrtf(r2));
+    });
+    return particle_mass * liquid_part + rest_density * rigid_part;
+  }
+};
+
 struct ComputeDensity {
-  DensityAt density_at;
+  ListedDensity density_of;
   float* density;
-  DP_HD void operator()(std::size_t i) const { density[i] = density_at(density_at.liquid.position[i]); }
+  DP_HD void operator()(std::size_t i) const { density[i] = density_of(i); }
 };
 
 }  // namespace dp

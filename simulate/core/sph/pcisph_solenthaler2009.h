@@ -45,39 +45,16 @@ struct PredictPosition {
 // not pull: p_i += delta * (rho*_i - rho0); the error is kept for the
 // average.
 struct CorrectPressure {
-  NeighborList liquid_neighbors;  // includes i itself
-  NeighborList rigid_neighbors;
-  const Vec3* predicted;          // liquid, predicted positions
-  const Vec3* rigid_position;
-  const MassUnits* units;
-  const float* rigid_volume;
-  CubicSplineKernel kernel;
-  float particle_mass;
-  float rest_density;
+  ListedDensity predicted_density;  // over the predicted positions
   float delta;
   float* pressure;
   float* density_error;  // (rho* - rho0)/rho0, >= 0
-
-  DP_HD float predicted_density(std::size_t i) const {
-    const Vec3 xi = predicted[i];
-    const float h2 = kernel.h * kernel.h;
-    float liquid_part = 0.0f, rigid_part = 0.0f;
-    liquid_neighbors.for_each(i, [&](std::uint32_t j) {
-      float r2 = length_squared(xi - predicted[j]);
-      if (r2 < h2) liquid_part += weight_of(units[j]) * kernel.W(sqrtf(r2));
-    });
-    rigid_neighbors.for_each(i, [&](std::uint32_t b) {
-      float r2 = length_squared(xi - rigid_position[b]);
-      if (r2 < h2) rigid_part += rigid_volume[b] * kernel.W(sqrtf(r2));
-    });
-    return particle_mass * liquid_part + rest_density * rigid_part;
-  }
-
   DP_HD void operator()(std::size_t i) const {
+    const float rho0 = predicted_density.rest_density;
     float rho = predicted_density(i);
-    float error = rho > rest_density ? rho - rest_density : 0.0f;
+    float error = rho > rho0 ? rho - rho0 : 0.0f;
     pressure[i] += delta * error;
-    density_error[i] = error / rest_density;
+    density_error[i] = error / rho0;
   }
 };
 

@@ -9,13 +9,16 @@
 #include "backend/host_device.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
+#include "sph/neighbor_list.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
 
 struct ApplyXsph {
-  GridView liquid;
-  GridView rigid;
+  NeighborList liquid_neighbors;
+  NeighborList rigid_neighbors;
+  const Vec3* position;
+  const Vec3* rigid_position;
   const MassUnits* units;
   const float* density;
   const float* rigid_volume;
@@ -26,17 +29,17 @@ struct ApplyXsph {
   float boundary_epsilon;  // against rigid particles
   Vec3* smoothed;          // after
   DP_HD void operator()(std::size_t i) const {
-    const Vec3 xi = liquid.position[i], vi = velocity[i];
+    const Vec3 xi = position[i], vi = velocity[i];
     const float h2 = kernel.h * kernel.h;
     Vec3 dv{};
-    liquid.for_each_near(xi, [&](std::uint32_t j) {
-      float r2 = length_squared(xi - liquid.position[j]);
+    liquid_neighbors.for_each(i, [&](std::uint32_t j) {
+      float r2 = length_squared(xi - position[j]);
       if (j == i || r2 >= h2) return;
       float volume_j = particle_mass * weight_of(units[j]) / density[j];
       dv += (epsilon * volume_j * kernel.W(sqrtf(r2))) * (velocity[j] - vi);
     });
-    rigid.for_each_near(xi, [&](std::uint32_t b) {
-      float r2 = length_squared(xi - rigid.position[b]);
+    rigid_neighbors.for_each(i, [&](std::uint32_t b) {
+      float r2 = length_squared(xi - rigid_position[b]);
       if (r2 >= h2) return;
       dv -= (boundary_epsilon * rigid_volume[b] * kernel.W(sqrtf(r2))) * vi;
     });
