@@ -250,9 +250,13 @@ class SimulationImpl final : public Simulation {
     const GridView liquid = liquid_grid_.view(liquid_.position);
     const GridView rigid = rigid_grid_.view(rigid_position_);
     exec_.parallel_for(n, ComputeDensity{listed_density(Exec::ptr(liquid_.position)), Exec::ptr(density_)});
+    // The colour gradient serves twice: Akinci 2013's surface normals and
+    // the particles' surface areas.
+    exec_.parallel_for(n, ComputeSurfaceNormal{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), kernel_,
+                                               particle_mass_, Exec::ptr(normal_)});
     exec_.parallel_for(n, ComputeSurfaceArea{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), particle_mass_, rigid,
                                              Exec::ptr(rigid_volume_), rigid_position_.size() > 0, kernel_,
-                                             area_calibration_, Exec::ptr(surface_area_)});
+                                             area_calibration_, Exec::ptr(surface_area_), Exec::ptr(normal_)});
     exec_.synchronize();
     double other = seconds_since(t1);
 
@@ -266,8 +270,6 @@ class SimulationImpl final : public Simulation {
     // Akinci et al. 2013.
     const bool tension = setup_.liquid.surface_tension > 0 || has_adhesion_;
     if (tension) {
-      exec_.parallel_for(n, ComputeSurfaceNormal{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), kernel_,
-                                                 particle_mass_, Exec::ptr(normal_)});
       const SurfaceTensionParameters st{kernel_, particle_mass_, setup_.liquid.rest_density, setup_.liquid.surface_tension};
       exec_.parallel_for(n, ComputeSurfaceTensionAcceleration{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(density_),
                                                               Exec::ptr(normal_), Exec::ptr(rigid_volume_),

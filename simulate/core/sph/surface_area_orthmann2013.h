@@ -65,6 +65,10 @@ struct ComputeSurfaceArea {
   CubicSplineKernel kernel;
   float calibration;             // gamma, from flat_face_area_calibration
   float* area;                   // A_i, m^2, per sorted liquid particle
+  // Optional: Akinci 2013 surface normals h sum_j V_j grad W_ij already
+  // computed this step (ComputeSurfaceNormal); the liquid colour gradient is
+  // then read from them instead of summed again.
+  const Vec3* akinci_normal = nullptr;
 
   DP_HD float volume_of(std::uint32_t j) const { return particle_mass * weight_of(units[j]) / density[j]; }
 
@@ -94,7 +98,7 @@ struct ComputeSurfaceArea {
   }
 
   DP_HD Vec3 colour_gradient(std::size_t i) const {
-    Vec3 n = liquid_colour_gradient(i);
+    Vec3 n = akinci_normal ? (1.0f / kernel.h) * akinci_normal[i] : liquid_colour_gradient(i);
     if (!with_rigid) return n;
     Vec3 wall = rigid_colour_gradient(liquid.position[i]);
     float wall_strength = length(wall);
