@@ -18,11 +18,13 @@ class CudaAgreement : public ::testing::Test {
   }
 };
 
-TEST_F(CudaAgreement, SimulationMatchesCpuAfter100Steps) {
+// 20 steps: rounding differences (FMA contraction on the GPU) grow with
+// the dynamics' sensitivity, so a short run tests the kernels, not chaos.
+TEST_F(CudaAgreement, SimulationMatchesCpuAfter20Steps) {
   SimulationSetup setup = test::block_over_plate(12, 10, 12);
   auto cpu = make_simulation(ExecutionConfig{Device::Cpu, 0}, setup);
   auto gpu = make_simulation(ExecutionConfig{Device::Cuda, 0}, setup);
-  for (int i = 0; i < 100; ++i) {
+  for (int i = 0; i < 20; ++i) {
     cpu->step();
     gpu->step();
   }
@@ -37,7 +39,10 @@ TEST_F(CudaAgreement, SimulationMatchesCpuAfter100Steps) {
     max_drho = std::max(max_drho, static_cast<double>(std::fabs(a.density[i] - b.density[i]) / setup.liquid.rest_density));
   }
   RecordProperty("max_position_difference_m", std::to_string(max_dx));
-  EXPECT_LT(max_dx, 1e-5 * setup.particle_spacing * 100);  // 1e-3 spacings
+  EXPECT_LT(max_dx, 1e-3 * setup.particle_spacing);
+  std::vector<float> ta = cpu->rigid_temperatures(), tb = gpu->rigid_temperatures();
+  for (std::size_t i = 0; i < ta.size(); ++i) EXPECT_NEAR(ta[i], tb[i], 1e-3f);
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a.temperature[i], b.temperature[i], 1e-3f);
   EXPECT_LT(max_drho, 1e-4);
   std::vector<float> va = cpu->rigid_volumes(), vb = gpu->rigid_volumes();
   ASSERT_EQ(va.size(), vb.size());
