@@ -105,7 +105,7 @@ class SimulationImpl final : public Simulation {
   StepReport step() override { return step_with(next_time_step()); }
 
   void advance_to(double time) override {
-    // Steps end on frame times exactly; a remainder below a microsecond is
+    // Steps end on frame times exactly; a remainder below a nanosecond is
     // rounding of earlier steps, not a step.
     while (time - time_ > 1e-9) {
       float dt = next_time_step();
@@ -237,6 +237,10 @@ class SimulationImpl final : public Simulation {
   StepReport step_with(float dt) {
     StepReport report;
     report.dt = dt;
+    // Alg. 1 line 18 of the previous step, run here so that the state a
+    // frame sees (positions and the step's densities, pressures, areas) is
+    // of one particle set.
+    adapt_masses();
     auto t0 = Clock::now();
     sort_liquid();  // Alg. 1 line 3
     // The step's neighbourhoods, found once for all pressure iterations.
@@ -297,7 +301,6 @@ class SimulationImpl final : public Simulation {
     ++steps_;
     time_ += dt;
     check_stability();
-    adapt_masses();  // Alg. 1 line 18
     exec_.synchronize();
     report.seconds_other = other + seconds_since(t3);
     report_ = report;

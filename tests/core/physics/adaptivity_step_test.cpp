@@ -35,6 +35,11 @@ TEST(AdaptivityInStep, LightParticlesMergeAndMassIsExact) {
     EXPECT_GT(u, 0u);
   }
   EXPECT_EQ(after, total);
+  // The frame's per-step quantities belong to the same particle set.
+  ASSERT_EQ(p.density.size(), p.size());
+  ASSERT_EQ(p.surface_area.size(), p.size());
+  ASSERT_EQ(p.pressure.size(), p.size());
+  for (float rho : p.density) EXPECT_GT(rho, 0.5f * setup.liquid.rest_density);
   EXPECT_LT(p.size(), n0);
   RecordProperty("particles_before", std::to_string(n0));
   RecordProperty("particles_after", std::to_string(p.size()));
