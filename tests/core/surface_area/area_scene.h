@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "../sorted_particles.h"
 #include "backend/cpu_exec.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
@@ -13,46 +14,9 @@
 
 namespace dp::area_test {
 
-struct SortedSet {
-  ParticleGrid<CpuExec> grid;
-  std::vector<Vec3> position;  // sorted
-  GridView view() const { return grid.view(position); }
-  std::size_t size() const { return position.size(); }
-  template <class T>
-  std::vector<T> to_lattice(const std::vector<T>& v) const {
-    std::vector<T> out(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) out[grid.order[i]] = v[i];
-    return out;
-  }
-};
-
-// Cell size h over the bounding box of both sets (either may be empty).
-inline UniformGrid grid_around(const std::vector<Vec3>& a, const std::vector<Vec3>& b, float h) {
-  Vec3 lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
-  for (const auto* set : {&a, &b})
-    for (Vec3 p : *set) {
-      lo = Vec3{std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = Vec3{std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-  UniformGrid g;
-  g.origin = lo - Vec3{h, h, h};
-  g.cell_size = h;
-  g.nx = static_cast<int>(std::ceil((hi.x - lo.x) / h)) + 3;
-  g.ny = static_cast<int>(std::ceil((hi.y - lo.y) / h)) + 3;
-  g.nz = static_cast<int>(std::ceil((hi.z - lo.z) / h)) + 3;
-  return g;
-}
-
-inline SortedSet sort_into(const CpuExec& exec, const std::vector<Vec3>& position, const UniformGrid& grid) {
-  SortedSet s;
-  s.grid.grid = grid;
-  CpuExec::Buffer<Vec3> unsorted = position;
-  s.position.resize(position.size());
-  s.grid.sort(exec, unsorted);
-  exec.parallel_for(position.size(), Gather<Vec3>{s.grid.order.data(), unsorted.data(), s.position.data()});
-  s.grid.find_ranges(exec);
-  return s;
-}
+using test::grid_around;
+using test::sort_into;
+using test::SortedSet;
 
 // Akinci 2012, Eq. 4: V_b = 1 / sum_k W_bk over the boundary particles.
 inline std::vector<float> akinci_volumes(const SortedSet& wall, const CubicSplineKernel& kernel) {
@@ -80,7 +44,7 @@ inline Areas surface_areas(const std::vector<Vec3>& liquid, const std::vector<Ve
                            int threads = 2, float weight = 1.0f, float density = 1000.0f) {
   CpuExec exec(threads);
   const CubicSplineKernel kernel = CubicSplineKernel::with_support(2.0f * spacing);
-  const UniformGrid grid = grid_around(liquid, wall, kernel.h);
+  const UniformGrid grid = grid_around({liquid, wall}, kernel.h);
   SortedSet l = sort_into(exec, liquid, grid), w = sort_into(exec, wall, grid);
   std::vector<float> wall_volume = akinci_volumes(w, kernel);
   std::vector<MassUnits> units(liquid.size(), static_cast<MassUnits>(weight * kFullParticleUnits));
@@ -106,13 +70,6 @@ inline std::vector<Vec3> lattice_ball(int n, float spacing) {
   return p;
 }
 
-// nx x ny x nz lattice points at `spacing`, the first at `corner`.
-inline std::vector<Vec3> lattice_block(Vec3 corner, int nx, int ny, int nz, float spacing) {
-  std::vector<Vec3> p;
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) p.push_back(corner + spacing * Vec3{float(i), float(j), float(k)});
-  return p;
-}
+using test::lattice_block;
 
 }  // namespace dp::area_test

@@ -25,7 +25,7 @@ std::vector<float> disordered_areas(int threads, bool from_akinci_normals = fals
   std::vector<Vec3> pl, pw;
   for (int i = 0; i < 3000; ++i) pl.push_back(Vec3{0.12f * u(rng), 0.12f * u(rng), 0.01f + 0.1f * u(rng)});
   for (int i = 0; i < 1500; ++i) pw.push_back(Vec3{0.12f * u(rng), 0.12f * u(rng), 0.01f * u(rng)});
-  const UniformGrid grid = area_test::grid_around(pl, pw, kernel.h);
+  const UniformGrid grid = area_test::grid_around({pl, pw}, kernel.h);
   area_test::SortedSet l = area_test::sort_into(exec, pl, grid), w = area_test::sort_into(exec, pw, grid);
   std::vector<float> wall_volume = area_test::akinci_volumes(w, kernel);
   std::vector<MassUnits> units;
