@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../cuda_test_support.cuh"
 #include "backend/cuda_exec.cuh"
 #include "backend/device.h"
 #include "sph/particle_grid.h"
@@ -17,35 +18,9 @@
 namespace dp {
 namespace {
 
-struct DeviceSet {
-  ParticleGrid<CudaExec> grid;
-  CudaExec::Buffer<Vec3> position;  // sorted
-  std::vector<Vec3> host_position;
-  std::vector<std::uint32_t> host_begin, host_end;
+using test::DeviceSet;
 
-  void build(const CudaExec& exec, const std::vector<Vec3>& p, const UniformGrid& g) {
-    grid.grid = g;
-    CudaExec::Buffer<Vec3> unsorted;
-    CudaExec::upload(unsorted, p);
-    position.resize(p.size());
-    grid.sort(exec, unsorted);
-    exec.parallel_for(p.size(), Gather<Vec3>{CudaExec::ptr(grid.order), CudaExec::ptr(unsorted), CudaExec::ptr(position)});
-    grid.find_ranges(exec);
-    host_position = CudaExec::download(position);
-    host_begin = CudaExec::download(grid.cell_begin);
-    host_end = CudaExec::download(grid.cell_end);
-  }
-  GridView device_view() const { return grid.view(position); }
-  GridView host_view() const { return GridView{grid.grid, host_begin.data(), host_end.data(), host_position.data()}; }
-};
-
-class surface_area_CudaAgreement : public ::testing::Test {
- protected:
-  void SetUp() override {
-    std::string why;
-    if (cuda_device_count(&why) == 0) GTEST_SKIP() << "no GPU: " << why;
-  }
-};
+class surface_area_CudaAgreement : public test::RequiresGpu {};
 
 TEST_F(surface_area_CudaAgreement, AreasMatchTheHostWithinRounding) {
   CudaExec exec(0);

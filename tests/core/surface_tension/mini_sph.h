@@ -12,6 +12,7 @@
 
 #include "backend/cpu_exec.h"
 #include "sph/mass_units.h"
+#include "sph/boundary_akinci2012.h"
 #include "sph/particle_grid.h"
 #include "sph/surface_tension_akinci2013.h"
 
@@ -29,23 +30,6 @@ struct MiniSphParameters {
   float particle_mass() const { return rest_density * spacing * spacing * spacing; }
   // CFL 0.4 on the smoothing length h/2.
   float time_step() const { return 0.4f * 0.5f * support_radius() / speed_of_sound; }
-};
-
-// Akinci 2012, Eq. 4: V_b = 1 / sum_k W_bk over boundary neighbours k.
-struct MiniBoundaryVolume {
-  GridView rigid;
-  CubicSplineKernel kernel;
-  float* volume;
-  void operator()(std::size_t b) const {
-    const Vec3 xb = rigid.position[b];
-    const float h2 = kernel.h * kernel.h;
-    float sum = 0.0f;
-    rigid.for_each_near(xb, [&](std::uint32_t k) {
-      float r2 = length_squared(xb - rigid.position[k]);
-      if (r2 < h2) sum += kernel.W(sqrtf(r2));
-    });
-    volume[b] = 1.0f / sum;
-  }
 };
 
 // rho_i = sum_j m_j W_ij + sum_b rho0 V_b W_ib and p_i = c^2 (rho_i - rho0), at least 0.
@@ -168,7 +152,7 @@ class MiniSph {
     rigid_volume_.assign(points.size(), 0.0f);
     rigid_adhesion_.assign(points.size(), adhesion);
     exec_.parallel_for(points.size(),
-                       MiniBoundaryVolume{rigid_grid_.view(rigid_position_), kernel_, rigid_volume_.data()});
+                       ComputeBoundaryVolume{rigid_grid_.view(rigid_position_), kernel_, rigid_volume_.data()});
   }
 
   // Reorders the liquid by cell and computes density, pressure, normals and

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../cuda_test_support.cuh"
 #include "backend/cuda_exec.cuh"
 #include "backend/device.h"
 #include "sph/particle_grid.h"
@@ -17,46 +18,9 @@
 namespace dp {
 namespace {
 
-// Particles sorted into a grid on the GPU; host copies of the sorted
-// positions and cell ranges let the host run the functors on the very same
-// neighbour order.
-struct SortedOnDevice {
-  ParticleGrid<CudaExec> grid;
-  CudaExec::Buffer<Vec3> position;
-  std::vector<Vec3> host_position;
-  std::vector<std::uint32_t> order, cell_begin, cell_end;
+using test::DeviceSet;
 
-  SortedOnDevice(const CudaExec& exec, const std::vector<Vec3>& points, const UniformGrid& g) {
-    grid.grid = g;
-    CudaExec::Buffer<Vec3> unsorted;
-    CudaExec::upload(unsorted, points);
-    position.resize(points.size());
-    grid.sort(exec, unsorted);
-    exec.parallel_for(points.size(),
-                      Gather<Vec3>{CudaExec::ptr(grid.order), CudaExec::ptr(unsorted), CudaExec::ptr(position)});
-    grid.find_ranges(exec);
-    host_position = CudaExec::download(position);
-    order = CudaExec::download(grid.order);
-    cell_begin = CudaExec::download(grid.cell_begin);
-    cell_end = CudaExec::download(grid.cell_end);
-  }
-  GridView on_device() const { return grid.view(position); }
-  GridView on_host() const { return GridView{grid.grid, cell_begin.data(), cell_end.data(), host_position.data()}; }
-  template <class T>
-  std::vector<T> sorted(const std::vector<T>& values) const {
-    std::vector<T> out(values.size());
-    for (std::size_t i = 0; i < values.size(); ++i) out[i] = values[order[i]];
-    return out;
-  }
-};
-
-class surface_tension_CudaAgreement : public ::testing::Test {
- protected:
-  void SetUp() override {
-    std::string why;
-    if (cuda_device_count(&why) == 0) GTEST_SKIP() << "no GPU: " << why;
-  }
-};
+class surface_tension_CudaAgreement : public test::RequiresGpu {};
 
 // The GPU contracts multiply-adds (FMA) and the host does not: the results
 // differ by rounding only, measured against the largest magnitude.
@@ -97,11 +61,13 @@ TEST_F(surface_tension_CudaAgreement, NormalsAndAccelerationsMatchTheHost) {
   g.nx = 11;
   g.ny = 10;
   g.nz = 9;
-  SortedOnDevice liquid(exec, liquid_points, g), rigid(exec, rigid_points, g);
-  units = liquid.sorted(units);
-  density = liquid.sorted(density);
-  volume = rigid.sorted(volume);
-  adhesion = rigid.sorted(adhesion);
+  DeviceSet liquid, rigid;
+  liquid.build(exec, liquid_points, g);
+  rigid.build(exec, rigid_points, g);
+  units = liquid.to_sorted(units);
+  density = liquid.to_sorted(density);
+  volume = rigid.to_sorted(volume);
+  adhesion = rigid.to_sorted(adhesion);
 
   CudaExec::Buffer<MassUnits> d_units;
   CudaExec::Buffer<float> d_density, d_volume, d_adhesion;
@@ -114,18 +80,18 @@ TEST_F(surface_tension_CudaAgreement, NormalsAndAccelerationsMatchTheHost) {
   const float m = 1000.0f * s * s * s;
   const SurfaceTensionParameters params{kernel, m, 1000.0f, 2.0f};
 
-  exec.parallel_for(n, ComputeSurfaceNormal{liquid.on_device(), CudaExec::ptr(d_units), CudaExec::ptr(d_density),
+  exec.parallel_for(n, ComputeSurfaceNormal{liquid.device_view(), CudaExec::ptr(d_units), CudaExec::ptr(d_density),
                                             kernel, m, CudaExec::ptr(d_normal)});
-  exec.parallel_for(n, ComputeSurfaceTensionAcceleration{liquid.on_device(), rigid.on_device(), CudaExec::ptr(d_units),
+  exec.parallel_for(n, ComputeSurfaceTensionAcceleration{liquid.device_view(), rigid.device_view(), CudaExec::ptr(d_units),
                                                          CudaExec::ptr(d_density), CudaExec::ptr(d_normal),
                                                          CudaExec::ptr(d_volume), CudaExec::ptr(d_adhesion), params,
                                                          CudaExec::ptr(d_tension)});
   exec.synchronize();
 
   std::vector<Vec3> normal(n), tension(n);
-  ComputeSurfaceNormal host_normal{liquid.on_host(), units.data(), density.data(), kernel, m, normal.data()};
+  ComputeSurfaceNormal host_normal{liquid.host_view(), units.data(), density.data(), kernel, m, normal.data()};
   for (std::size_t i = 0; i < n; ++i) host_normal(i);
-  ComputeSurfaceTensionAcceleration host_tension{liquid.on_host(), rigid.on_host(), units.data(), density.data(),
+  ComputeSurfaceTensionAcceleration host_tension{liquid.host_view(), rigid.host_view(), units.data(), density.data(),
                                                  normal.data(), volume.data(), adhesion.data(), params,
                                                  tension.data()};
   for (std::size_t i = 0; i < n; ++i) host_tension(i);
