@@ -45,8 +45,7 @@ TEST(Hydrostatics, SettledColumnIsIncompressibleAndPressureIsRhoGDepth) {
     ASSERT_LT(x.z, lz);
   }
 
-  // The free surface: half a spacing above the mean height of the top layer
-  // (the particles that have no particle above them within a spacing).
+  // The free surface: half a spacing above the mean height of the top layer.
   float top = 0;
   for (const Vec3& x : p.position) top = std::max(top, x.y);
   double layer = 0;
@@ -55,47 +54,59 @@ TEST(Hydrostatics, SettledColumnIsIncompressibleAndPressureIsRhoGDepth) {
     if (x.y > top - 0.5f * s) layer += x.y, ++count;
   const double surface = layer / count + 0.5 * s;
 
-  // Pressure against depth, averaged over horizontal slabs one spacing thick
-  // in the lower two thirds of the column, away from the lateral walls.
-  // PCISPH's pressures are per-step corrections: their slab means grow with
-  // depth, but their level scatters from 0.95 to 1.35 rho0 g d with the
-  // step's iteration count, so issue #3's 5 % criterion is reported here
-  // (pressure_to_hydrostatic_ratio, pressure_depth_r2), not asserted, until
-  // the solver meets it.
+  // Pressure against depth in horizontal slabs one spacing thick in the
+  // lower two thirds of the column, away from the lateral walls, averaged
+  // over 0.1 s of steps as a gauge would.
   const double g = 9.81, rho0 = setup.liquid.rest_density;
+  std::vector<double> slab_y;
+  for (double y = 2 * s; y < surface - surface / 3; y += s) slab_y.push_back(y);
+  std::vector<double> sum_p(slab_y.size(), 0), sum_depth(slab_y.size(), 0), samples(slab_y.size(), 0);
+  const double end = sim->time() + 0.1;
+  while (sim->time() < end) {
+    sim->step();
+    p = sim->particles();
+    for (std::size_t k = 0; k < slab_y.size(); ++k)
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        const Vec3 x = p.position[i];
+        if (std::fabs(x.y - slab_y[k]) > 0.5 * s) continue;
+        if (x.x < 2.5f * s || x.x > lx - 2.5f * s || x.z < 2.5f * s || x.z > lz - 2.5f * s) continue;
+        sum_p[k] += p.pressure[i];
+        sum_depth[k] += surface - x.y;
+        samples[k] += 1;
+      }
+  }
   std::vector<double> depths, pressures;
-  for (double y = 2 * s; y < surface - surface / 3; y += s) {
-    double sum_p = 0, sum_depth = 0;
-    int count = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const Vec3 x = p.position[i];
-      if (std::fabs(x.y - y) > 0.5 * s) continue;
-      if (x.x < 2.5f * s || x.x > lx - 2.5f * s || x.z < 2.5f * s || x.z > lz - 2.5f * s) continue;
-      sum_p += p.pressure[i];
-      sum_depth += surface - x.y;
-      ++count;
-    }
-    if (count < 4) continue;
-    depths.push_back(sum_depth / count);
-    pressures.push_back(sum_p / count);
+  for (std::size_t k = 0; k < slab_y.size(); ++k) {
+    if (samples[k] < 40) continue;
+    depths.push_back(sum_depth[k] / samples[k]);
+    pressures.push_back(sum_p[k] / samples[k]);
   }
   ASSERT_GE(depths.size(), 10u);
-  double md = 0, mp = 0, ratio = 0;
+  // Issue #3: p(d) = rho0 g d within 5 %. Slab means still scatter by a
+  // few per cent as the particle layers shift against the slab bounds, so
+  // the test takes the least-squares line through them: its slope is
+  // rho0 g and its value at every measured depth rho0 g d, both within 5 %.
+  double md = 0, mp = 0;
   for (std::size_t k = 0; k < depths.size(); ++k) {
     md += depths[k] / depths.size();
     mp += pressures[k] / depths.size();
-    ratio += pressures[k] / (rho0 * g * depths[k]) / depths.size();
   }
-  double sdd = 0, spp = 0, sdp = 0;
+  double sdd = 0, sdp = 0;
   for (std::size_t k = 0; k < depths.size(); ++k) {
     sdd += (depths[k] - md) * (depths[k] - md);
-    spp += (pressures[k] - mp) * (pressures[k] - mp);
     sdp += (depths[k] - md) * (pressures[k] - mp);
   }
-  const double r2 = sdp * sdp / (sdd * spp);
-  EXPECT_GT(sdp, 0.0) << "pressure must grow with depth";
-  RecordProperty("pressure_to_hydrostatic_ratio", std::to_string(ratio));
-  RecordProperty("pressure_depth_r2", std::to_string(r2));
+  const double slope = sdp / sdd;
+  EXPECT_NEAR(slope / (rho0 * g), 1.0, 0.05);
+  double worst_slab = 0;
+  for (std::size_t k = 0; k < depths.size(); ++k) {
+    const double hydrostatic = rho0 * g * depths[k];
+    const double fitted = mp + slope * (depths[k] - md);
+    EXPECT_NEAR(fitted / hydrostatic, 1.0, 0.05) << "depth " << depths[k] << " m";
+    worst_slab = std::max(worst_slab, std::fabs(pressures[k] / hydrostatic - 1.0));
+  }
+  RecordProperty("worst_slab_deviation", std::to_string(worst_slab));
+  RecordProperty("pressure_slope_over_rho_g", std::to_string(slope / (rho0 * g)));
 }
 
 }  // namespace
