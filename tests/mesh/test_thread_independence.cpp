@@ -7,6 +7,7 @@
 
 #include "liquid_surface.h"
 #include "marching_cubes.h"
+#include "liquid_field.h"
 #include "zhu_bridson.h"
 
 namespace dp::mesh {
@@ -37,7 +38,7 @@ Result mesh_with_threads(const LiquidParticles& p, int threads) {
   const double spacing = 0.04;
   const SurfaceParameters parameters = surface_parameters(spacing, io::MeshSettings{});
   const GridBox box = zhu_bridson_grid_box(p, parameters.kernel_radius, parameters.voxel_size);
-  Result r{sample_zhu_bridson(p, parameters.kernel_radius, box), {}};
+  Result r{sample_liquid_field(p, parameters.kernel_radius, box, nullptr), {}};
   r.mesh = marching_cubes(r.field);
   return r;
 }
