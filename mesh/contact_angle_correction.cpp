@@ -10,7 +10,9 @@ namespace dp::mesh {
 
 ContactAngleCorrection_HochstetterKolb2017::ContactAngleCorrection_HochstetterKolb2017(const RigidWalls& walls,
                                                                                        ContactAngleSettings settings)
-    : walls_(walls), settings_(std::move(settings)) {
+    : walls_(walls),
+      settings_(std::move(settings)),
+      outside_band_(std::hypot(settings_.reach_factor, 1 + std::sqrt(2.0)) - 1 + 0.05) {
   if (settings_.per_rigid.size() != walls.rigid_count())
     throw std::invalid_argument("contact angles: one set of parameters per rigid is needed");
   for (const auto& p : settings_.per_rigid) angles_.emplace_back(p);

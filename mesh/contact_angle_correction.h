@@ -53,10 +53,19 @@ class ContactAngleCorrection_HochstetterKolb2017 {
 
   // Whether any correction can change the sign of phi at a node with this
   // phi0 and rbar. Outside this band the corrections are skipped: the sign
-  // is all marching cubes needs there. The footprint only lowers phi, the
-  // meniscus shifts it by at most sqrt(2) rbar and only within reach of the wall.
+  // is all marching cubes needs there. Inside the liquid the meniscus raises
+  // phi by at most |d| <= sqrt(2) rbar (Eq. 20 at s = 0); outside, the
+  // footprint reaches at most sqrt(reach^2 + (1 + sqrt 2)^2) rbar from xbar.
+  // (A footprint pinched away by alpha > 150 degrees, rbar + d < 0, can
+  // raise phi further; deep inside the liquid that is ignored.)
   bool may_change_sign(double phi0, double rbar) const {
-    return phi0 > -3 * rbar && phi0 < (settings_.reach_factor + 2.5) * rbar;
+    return phi0 > -1.5 * rbar && phi0 < outside_band_ * rbar;
+  }
+
+  // Whether a wall can be within reach of xbar, for a node at least
+  // `wall_gap` from every wall: xbar is |x - xbar| = phi0 + rbar from x.
+  bool wall_within_reach(double wall_gap, double phi0, double rbar) const {
+    return wall_gap < phi0 + (1 + settings_.reach_factor) * rbar;
   }
 
   // How far from x a wall can be and still matter at x: xbar lies within
@@ -70,6 +79,7 @@ class ContactAngleCorrection_HochstetterKolb2017 {
  private:
   const RigidWalls& walls_;
   ContactAngleSettings settings_;
+  double outside_band_;
   std::vector<DynamicContactAngle_HochstetterKolb2017> angles_;
 };
 
