@@ -11,9 +11,14 @@ LiquidParticles liquid_particles_from_ply(const io::PlyData& ply, double nominal
   const std::vector<float> x = ply.floats("x"), y = ply.floats("y"), z = ply.floats("z");
   const bool has_weight = ply.find("weight") != nullptr;
   const std::vector<float> w = has_weight ? ply.floats("weight") : std::vector<float>(ply.vertex_count, 1.0f);
+  const bool has_velocity = ply.find("vx") && ply.find("vy") && ply.find("vz");
+  const std::vector<float> zero(has_velocity ? 0 : ply.vertex_count, 0.0f);
+  const std::vector<float> vx = has_velocity ? ply.floats("vx") : zero, vy = has_velocity ? ply.floats("vy") : zero,
+                           vz = has_velocity ? ply.floats("vz") : zero;
   LiquidParticles p;
   p.position.resize(ply.vertex_count);
   p.radius.resize(ply.vertex_count);
+  p.velocity.resize(ply.vertex_count);
   for (std::size_t i = 0; i < ply.vertex_count; ++i) {
     if (!std::isfinite(x[i]) || !std::isfinite(y[i]) || !std::isfinite(z[i]))
       throw std::runtime_error("particle " + std::to_string(i) + " has a non-finite position");
@@ -21,7 +26,10 @@ LiquidParticles liquid_particles_from_ply(const io::PlyData& ply, double nominal
     if (!std::isfinite(w[i]) || w[i] < 0)
       throw std::runtime_error("particle " + std::to_string(i) + " has weight " + std::to_string(w[i]) +
                                ", expected finite and non-negative");
+    if (!std::isfinite(vx[i]) || !std::isfinite(vy[i]) || !std::isfinite(vz[i]))
+      throw std::runtime_error("particle " + std::to_string(i) + " has a non-finite velocity");
     p.position[i] = {x[i], y[i], z[i]};
+    p.velocity[i] = {vx[i], vy[i], vz[i]};
     p.radius[i] = nominal_radius * std::cbrt(double(w[i]));
   }
   return p;

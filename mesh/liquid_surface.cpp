@@ -40,12 +40,14 @@ SurfaceParameters surface_parameters(double particle_spacing, const io::MeshSett
   return p;
 }
 
-LiquidSurface liquid_surface(const LiquidParticles& particles, const SurfaceParameters& parameters) {
+LiquidSurface liquid_surface(const LiquidParticles& particles, const SurfaceParameters& parameters,
+                             const ContactAngleCorrection_HochstetterKolb2017* correction) {
   LiquidSurface surface;
   if (particles.size() == 0) return surface;
   auto start = std::chrono::steady_clock::now();
   surface.grid = zhu_bridson_grid_box(particles, parameters.kernel_radius, parameters.voxel_size);
-  const ScalarGrid field = sample_zhu_bridson(particles, parameters.kernel_radius, surface.grid);
+  const ScalarGrid field =
+      sample_liquid_field(particles, parameters.kernel_radius, surface.grid, correction, &surface.counts);
   surface.field_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
   surface.mesh = marching_cubes(field);

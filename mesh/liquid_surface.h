@@ -1,6 +1,8 @@
 #pragma once
 // From particles to the liquid's surface mesh: the Zhu-Bridson field (paper
-// Eq. 19) sampled on a grid, then marching cubes.
+// Eq. 19), corrected at rigid walls (Eq. 20-24) when walls are given,
+// sampled on a grid, then marching cubes.
+#include "liquid_field.h"
 #include "liquid_particles.h"
 #include "scene.h"
 #include "surface_mesh.h"
@@ -23,9 +25,12 @@ SurfaceParameters surface_parameters(double particle_spacing, const io::MeshSett
 struct LiquidSurface {
   SurfaceMesh mesh;
   GridBox grid;  // the sampling grid; empty when there are no particles
+  LiquidFieldCounts counts;
   double field_seconds = 0, marching_cubes_seconds = 0;
 };
 
-LiquidSurface liquid_surface(const LiquidParticles& particles, const SurfaceParameters& parameters);
+// `correction` may be null: the uncorrected surface.
+LiquidSurface liquid_surface(const LiquidParticles& particles, const SurfaceParameters& parameters,
+                             const ContactAngleCorrection_HochstetterKolb2017* correction = nullptr);
 
 }  // namespace dp::mesh

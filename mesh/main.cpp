@@ -16,7 +16,8 @@ struct Options {
   std::string frames_dir, out_dir, frames;
   double voxel_size = 0, voxels_per_radius = 0;
   int threads = 0;
-  bool quiet = false;
+  bool quiet = false, no_correction = false, check = false;
+  double contact_angle_deg = 0;
 };
 
 int run(const Options& opt) {
@@ -27,12 +28,20 @@ int run(const Options& opt) {
   job.voxel_size = opt.voxel_size;
   job.voxels_per_radius = opt.voxels_per_radius;
   job.quiet = opt.quiet;
+  job.no_correction = opt.no_correction;
+  job.contact_angle_deg = opt.contact_angle_deg;
+  job.check = opt.check;
   // The limit lives as long as this object: for the whole run.
   std::unique_ptr<tbb::global_control> limit;
   if (opt.threads > 0)
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, opt.threads);
   job.threads = static_cast<int>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-  dp::mesh::mesh_frames(job);
+  const dp::mesh::MeshFramesResult result = dp::mesh::mesh_frames(job);
+  if (result.failed_checks > 0) {
+    std::cerr << "dewpoint-mesh: --check: " << result.failed_checks << " of " << result.frames
+              << " meshes failed (see \"check\" in their sidecars)\n";
+    return 1;
+  }
   return 0;
 }
 
@@ -50,6 +59,14 @@ int main(int argc, char** argv) {
                  "voxels per particle radius (default: the scene's mesh.voxels_per_radius)")
       ->check(CLI::PositiveNumber)
       ->excludes(voxel);
+  app.add_flag("--no-correction", opt.no_correction,
+               "plain Zhu-Bridson surface (paper Eq. 19), without the wall corrections of Eq. 20-24");
+  app.add_option("--contact-angle", opt.contact_angle_deg,
+                 "static contact angle alpha_base in degrees for every rigid (default: the scene's mesh section)")
+      ->check(CLI::Range(0.0, 180.0) & CLI::PositiveNumber);
+  app.add_flag("--check", opt.check,
+               "check every mesh with CGAL (closed, manifold, oriented, self-intersections, volume, area); exit code 1 "
+               "if one fails");
   app.add_option("--threads", opt.threads, "CPU threads (0: all)")->check(CLI::Range(0, 4096));
   app.add_flag("--quiet", opt.quiet, "no progress output");
   try {

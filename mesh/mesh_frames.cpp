@@ -9,9 +9,11 @@
 #include "dewpoint/version.h"
 #include "frames.h"
 #include "liquid_surface.h"
+#include "mesh_check.h"
 #include "mesh_ply.h"
 #include "mesh_sidecar.h"
 #include "ply.h"
+#include "rigid_surfaces.h"
 #include "scene.h"
 
 namespace dp::mesh {
@@ -82,7 +84,7 @@ fs::path scene_file_of(const io::FramesManifest& manifest, const fs::path& frame
 
 }  // namespace
 
-int mesh_frames(const MeshFramesOptions& options) {
+MeshFramesResult mesh_frames(const MeshFramesOptions& options) {
   const io::FramesManifest manifest = io::read_manifest(options.frames_dir);
   const fs::path scene_file = scene_file_of(manifest, options.frames_dir);
   const io::Scene scene = io::load_scene(scene_file);
@@ -95,10 +97,21 @@ int mesh_frames(const MeshFramesOptions& options) {
   const std::vector<io::FrameEntry> frames = selected_frames(manifest, options.range, options.frames_dir);
   check_frames(options.frames_dir, frames, parameters);
 
+  // The walls are built once for the run: rigids do not move.
+  auto start = std::chrono::steady_clock::now();
+  const bool correct = scene.mesh.correction && !options.no_correction;
+  RigidSurfaces rigids;
+  if (correct) rigids = load_rigid_surfaces(scene, manifest, options.frames_dir);
+  const RigidWalls walls(rigids.meshes);
+  const ContactAngleSettings angles = contact_angle_settings(scene.mesh, rigids.names, options.contact_angle_deg);
+  const ContactAngleCorrection_HochstetterKolb2017 correction(walls, angles);
+  const double walls_seconds = seconds_since(start);
+
   fs::create_directories(options.out_dir);
   const std::string generator = std::string("dewpoint-mesh ") + kVersion;
   io::Progress progress("mesh " + manifest.scene_name, static_cast<long>(frames.size()), options.quiet);
   long done = 0;
+  MeshFramesResult result;
   for (const io::FrameEntry& frame : frames) {
     const fs::path particles_file = options.frames_dir / frame.particles_file;
     const std::string mesh_name = io::frame_file_name("liquid", frame.index, "ply");
@@ -113,13 +126,24 @@ int mesh_frames(const MeshFramesOptions& options) {
     sidecar.scene_file = scene_file;
     sidecar.parameters = parameters;
     sidecar.threads = options.threads;
+    sidecar.correction = correct;
+    sidecar.rigid_names = rigids.names;
+    sidecar.rigid_files = rigids.files;
+    sidecar.angles = angles;
+    sidecar.walls_seconds = walls_seconds;
 
-    auto start = std::chrono::steady_clock::now();
+    start = std::chrono::steady_clock::now();
     const LiquidParticles particles = read_liquid_particles(particles_file, frame, parameters.particle_radius);
     sidecar.liquid_particles = particles.size();
     sidecar.read_seconds = seconds_since(start);
 
-    const LiquidSurface surface = liquid_surface(particles, parameters);
+    const LiquidSurface surface = liquid_surface(particles, parameters, correct ? &correction : nullptr);
+    if (options.check) {
+      start = std::chrono::steady_clock::now();
+      sidecar.check = check_mesh(surface.mesh);
+      sidecar.check_seconds = seconds_since(start);
+      if (!sidecar.check->passed()) ++result.failed_checks;
+    }
 
     // A sidecar from an earlier run must not vouch for the new mesh while
     // it is being replaced.
@@ -131,13 +155,15 @@ int mesh_frames(const MeshFramesOptions& options) {
     const nlohmann::json record = mesh_sidecar_json(sidecar, surface);
     write_mesh_sidecar(sidecar_file, record);
 
-    char detail[160];
-    std::snprintf(detail, sizeof detail, "frame %d: %zu particles, %zu triangles, %.2f s", frame.index, particles.size(),
-                  surface.mesh.triangles.size(), record["seconds"].get<double>());
+    char detail[200];
+    std::snprintf(detail, sizeof detail, "frame %d: %zu particles, %zu triangles, %.2f s%s", frame.index, particles.size(),
+                  surface.mesh.triangles.size(), record["seconds"].get<double>(),
+                  !sidecar.check ? "" : sidecar.check->passed() ? ", check passed" : ", CHECK FAILED (see the sidecar)");
     progress.update(++done, detail);
   }
   progress.finish(std::to_string(done) + " meshes in " + options.out_dir.string());
-  return static_cast<int>(done);
+  result.frames = static_cast<int>(done);
+  return result;
 }
 
 }  // namespace dp::mesh

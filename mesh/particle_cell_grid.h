@@ -23,6 +23,12 @@ class ParticleCellGrid {
   template <class Visit>
   void for_each_neighbour(Vec3d x, const Visit& visit) const;
 
+  // Calls visit(particle index) for every particle in the cells that
+  // overlap the box [lo, hi], cell by cell in memory order: a superset of
+  // the particles in the box, in an order fixed by the particles alone.
+  template <class Visit>
+  void for_each_in_box(Vec3d lo, Vec3d hi, const Visit& visit) const;
+
  private:
   std::array<std::int64_t, 3> cell_of(Vec3d x) const;
 
@@ -51,6 +57,19 @@ void ParticleCellGrid::for_each_neighbour(Vec3d x, const Visit& visit) const {
         const double r2 = length_squared(d);
         if (r2 < reach_squared) visit(p, d, r2);
       }
+    }
+}
+
+template <class Visit>
+void ParticleCellGrid::for_each_in_box(Vec3d lo, Vec3d hi, const Visit& visit) const {
+  if (sorted_.empty()) return;
+  const auto a = cell_of(lo), b = cell_of(hi);
+  for (std::int64_t k = std::max<std::int64_t>(a[2], 0); k <= std::min(b[2], cells_[2] - 1); ++k)
+    for (std::int64_t j = std::max<std::int64_t>(a[1], 0); j <= std::min(b[1], cells_[1] - 1); ++j) {
+      const std::int64_t i0 = std::max<std::int64_t>(a[0], 0), i1 = std::min(b[0], cells_[0] - 1);
+      if (i0 > i1) continue;
+      const std::int64_t row = (k * cells_[1] + j) * cells_[0];
+      for (std::uint32_t s = cell_start_[row + i0]; s < cell_start_[row + i1 + 1]; ++s) visit(sorted_[s]);
     }
 }
 

@@ -120,12 +120,40 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
   return s;
 }
 
-MeshSettings read_mesh(std::optional<JsonObject> o) {
+// A contact angle strictly between 0 and 180 degrees: at either end the
+// Deserno meniscus (paper Eq. 20) degenerates.
+double contact_angle(JsonObject& o, const std::string& key, double fallback) {
+  const double deg = o.number(key, fallback);
+  if (!(deg > 0 && deg < 180)) throw o.error(key, "expected an angle in (0, 180) degrees, found " + std::to_string(deg));
+  return deg;
+}
+
+double non_negative(JsonObject& o, const std::string& key, double fallback) {
+  const double value = o.number(key, fallback);
+  if (!(value >= 0)) throw o.error(key, "expected a non-negative number, found " + std::to_string(value));
+  return value;
+}
+
+MeshSettings read_mesh(std::optional<JsonObject> o, const SimulationSettings& sim) {
   MeshSettings m;
   if (!o) return m;
   m.voxels_per_radius = positive(*o, "voxels_per_radius", o->number("voxels_per_radius", m.voxels_per_radius));
   m.kernel_radius_factor = positive(*o, "kernel_radius_factor", o->number("kernel_radius_factor", m.kernel_radius_factor));
   m.particle_radius_factor = positive(*o, "particle_radius_factor", o->number("particle_radius_factor", m.particle_radius_factor));
+  m.correction = o->boolean("correction", m.correction);
+  m.contact_angle_deg = contact_angle(*o, "contact_angle_deg", m.contact_angle_deg);
+  m.advancing_deg = non_negative(*o, "advancing_deg", m.advancing_deg);
+  m.receding_deg = non_negative(*o, "receding_deg", m.receding_deg);
+  m.correction_reach_factor =
+      positive(*o, "correction_reach_factor", o->number("correction_reach_factor", m.correction_reach_factor));
+  if (o->has("rigids"))
+    for (auto& [name, r] : o->entries("rigids")) {
+      bool known = false;
+      for (const RigidObject& rigid : sim.rigids) known = known || rigid.name == name;
+      if (!known) throw o->error("rigids", "names rigid '" + name + "', which simulation.rigids does not have");
+      m.rigid_contact_angle_deg[name] = contact_angle(r, "contact_angle_deg", m.contact_angle_deg);
+      r.finish();
+    }
   o->finish();
   return m;
 }
@@ -213,7 +241,7 @@ Scene load_scene(const std::filesystem::path& file) {
   JsonObject top(scene.document, "", file);
   scene.name = top.string("name", scene.file.stem().string());
   scene.simulation = read_simulation(top.object("simulation"), scene.file.parent_path());
-  scene.mesh = read_mesh(top.optional_object("mesh"));
+  scene.mesh = read_mesh(top.optional_object("mesh"), scene.simulation);
   scene.render = read_render(top.object("render"), scene.simulation);
   top.finish();
   return scene;

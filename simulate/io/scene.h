@@ -76,6 +76,13 @@ struct MeshSettings {
   double voxels_per_radius = 2;   // voxel size = particle radius / this
   double kernel_radius_factor = 2;  // Zhu-Bridson kernel radius R = factor * particle spacing
   double particle_radius_factor = 0.5;  // r_i = factor * particle spacing
+  // Contact-angle corrections of paper Sec. 7 (Eq. 20-24).
+  bool correction = true;
+  double contact_angle_deg = 90;                           // static alpha_base of any rigid not listed below
+  std::map<std::string, double> rigid_contact_angle_deg;  // rigid name -> its alpha_base
+  double advancing_deg = 20;  // A_adv of Eq. 22, degrees per (m/s)^(1/3)
+  double receding_deg = 20;   // A_rec of Eq. 22, degrees per (m/s)^(1/3)
+  double correction_reach_factor = 1;  // correct where |xbar - xbar_p| < factor * rbar (the paper: 1)
 };
 
 enum class MaterialType { Diffuse, Dielectric, Conductor };

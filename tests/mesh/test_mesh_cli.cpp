@@ -53,15 +53,16 @@ class mesh_Cli : public ::testing::Test {
   fs::path frames_dir() const { return dir_ / "frames"; }
   fs::path out_dir() const { return dir_ / "meshes"; }
 
-  // A 4x4x4 block of liquid particles at the demo's spacing as frame 0.
-  void write_tiny_frames() {
+  // A 4x4x4 block of liquid particles at the demo's spacing as frame 0,
+  // its lowest layer `floor_gap` above the demo tray's floor (y = 0).
+  void write_tiny_frames(double floor_gap = 0.05) {
     dp::io::PlyData ply;
     std::vector<double> x, y, z, w;
     for (int k = 0; k < 4; ++k)
       for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 4; ++i) {
           x.push_back(i * kSpacing);
-          y.push_back(0.05 + j * kSpacing);
+          y.push_back(floor_gap + j * kSpacing);
           z.push_back(k * kSpacing);
           w.push_back(1.0);
         }
@@ -183,6 +184,66 @@ TEST_F(mesh_Cli, BadCommandLineExitsWithCodeTwoInOneLine) {
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.err.rfind("dewpoint-mesh: ", 0), 0u) << run.err;
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+}
+
+double lowest_vertex_y(const fs::path& ply_file) {
+  const dp::io::PlyData mesh = dp::io::read_ply(ply_file);
+  const std::vector<float> y = mesh.floats("y");
+  return *std::min_element(y.begin(), y.end());
+}
+
+// Paper Fig. 4 in numbers: the same frame meshed plain and corrected. The
+// block rests 4 mm above the tray's floor, closer than a particle radius
+// (6.25 mm): the plain spheres dip into the floor, the corrected surface
+// stands on it.
+TEST_F(mesh_Cli, CorrectedAndPlainMeshesOfTheSameFrame) {
+  write_tiny_frames(0.004);
+  const fs::path plain = dir_ / "plain", corrected = dir_ / "corrected";
+  MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(plain) + " --quiet --no-correction");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  run = mesher(quoted(frames_dir()) + " -o " + quoted(corrected) + " --quiet --check --contact-angle 60");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+
+  const auto plain_sidecar = nlohmann::json::parse(read_text(plain / "liquid.0000.json"));
+  const auto sidecar = nlohmann::json::parse(read_text(corrected / "liquid.0000.json"));
+  EXPECT_FALSE(plain_sidecar.at("correction").at("enabled").get<bool>());
+  const auto& correction = sidecar.at("correction");
+  EXPECT_TRUE(correction.at("enabled").get<bool>());
+  EXPECT_GT(correction.at("nodes_corrected").get<std::size_t>(), 0u);
+  ASSERT_EQ(correction.at("rigids").size(), 1u);
+  EXPECT_EQ(correction.at("rigids")[0].at("name").get<std::string>(), "tray");
+  EXPECT_DOUBLE_EQ(correction.at("rigids")[0].at("contact_angle_deg").get<double>(), 60);
+  EXPECT_TRUE(sidecar.at("check").at("passed").get<bool>()) << sidecar.at("check").dump();
+  EXPECT_GT(sidecar.at("check").at("volume_m3").get<double>(), 0);
+
+  EXPECT_LT(lowest_vertex_y(plain / "liquid.0000.ply"), -0.001);
+  EXPECT_GE(lowest_vertex_y(corrected / "liquid.0000.ply"), -1e-6);
+  EXPECT_LT(lowest_vertex_y(corrected / "liquid.0000.ply"), 1e-4);
+}
+
+TEST_F(mesh_Cli, ContactAngleOutOfRangeExitsWithCodeTwo) {
+  write_tiny_frames();
+  const MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()) + " --contact-angle 200");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--contact-angle"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
+}
+
+TEST_F(mesh_Cli, SceneNamingAnUnknownRigidInMeshSectionExitsWithCodeTwo) {
+  write_tiny_frames();
+  auto scene = nlohmann::json::parse(read_text(kScene));
+  scene["simulation"]["rigids"][0]["mesh"] = (kScene.parent_path() / "../meshes/tray.obj").lexically_normal().string();
+  scene["mesh"]["rigids"] = {{"glass", {{"contact_angle_deg", 30}}}};
+  const fs::path scene_file = dir_ / "scene.json";
+  std::ofstream(scene_file) << scene.dump(2);
+  dp::io::FramesManifest manifest = dp::io::read_manifest(frames_dir());
+  manifest.scene_file = scene_file;
+  dp::io::write_manifest(frames_dir(), manifest);
+  const MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err.rfind("dewpoint-mesh: " + scene_file.string() + ": mesh.rigids", 0), 0u) << run.err;
+  EXPECT_NE(run.err.find("'glass'"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
 }
 
 TEST_F(mesh_Cli, VersionNamesTheProgram) {
