@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs dewpoint's build and run dependencies from Debian packages.
+# Installs dewpoint's build and run dependencies from Debian packages
+# (clang and its runtime only for the libFuzzer targets, `make fuzz`).
 # Idempotent: when everything is present it prints nothing and returns at once.
 set -euo pipefail
 
@@ -8,6 +9,7 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
   libtbb-dev libassimp-dev libembree-dev libopenimageio-dev openimageio-tools
   libopenexr-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev
+  clang libclang-rt-14-dev libomp-dev
 )
 
 # The CPU backend compiles CCCL's Thrust with g++. It comes with the CUDA

@@ -97,6 +97,14 @@ FramesManifest read_manifest(const std::filesystem::path& frames_dir) {
     if (!o.is_object() || !o.contains(key)) throw std::runtime_error(file.string() + ": " + where + key + ": missing");
     return o[key];
   };
+  // Frame files are plain names in the frames folder: a manifest must not
+  // send a reader elsewhere.
+  auto file_name = [&](const nlohmann::json& value, const std::string& key) {
+    const std::string name = value.get<std::string>();
+    if (name.empty() || name == "." || name == ".." || name.find_first_of("/\\") != std::string::npos)
+      throw std::runtime_error(file.string() + ": " + key + ": expected a file name in the frames folder, found \"" + name + "\"");
+    return name;
+  };
   try {
     if (need(j, "format", "") != "dewpoint-frames") throw std::runtime_error(file.string() + ": format: expected \"dewpoint-frames\"");
     if (need(j, "format_version", "").get<int>() != kManifestVersion)
@@ -106,7 +114,7 @@ FramesManifest read_manifest(const std::filesystem::path& frames_dir) {
     m.scene_name = need(j, "scene_name", "").get<std::string>();
     m.particle_spacing_m = need(j, "particle_spacing_m", "").get<double>();
     m.particle_radius_m = need(j, "particle_radius_m", "").get<double>();
-    m.rigid_particles_file = need(j, "rigid_particles", "").get<std::string>();
+    m.rigid_particles_file = file_name(need(j, "rigid_particles", ""), "rigid_particles");
     const auto& frames = need(j, "frames", "");
     for (std::size_t i = 0; i < frames.size(); ++i) {
       std::string where = "frames[" + std::to_string(i) + "].";
@@ -116,7 +124,7 @@ FramesManifest read_manifest(const std::filesystem::path& frames_dir) {
       e.time_s = need(f, "time_s", where).get<double>();
       e.step = need(f, "step", where).get<std::int64_t>();
       e.liquid_particles = need(f, "liquid_particles", where).get<std::size_t>();
-      e.particles_file = need(need(f, "files", where), "particles", where + "files.").get<std::string>();
+      e.particles_file = file_name(need(need(f, "files", where), "particles", where + "files."), where + "files.particles");
       m.frames.push_back(e);
     }
     m.extra = j;

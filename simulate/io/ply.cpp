@@ -138,8 +138,11 @@ PlyData read_ply(const std::filesystem::path& path) {
       if (fmt == "ascii") binary = false;
       else if (fmt != "binary_little_endian") throw fail("line " + std::to_string(line_no) + ": unsupported PLY format '" + fmt + "' (expected binary_little_endian or ascii)");
     } else if (word == "element") {
-      std::size_t count;
-      s >> element >> count;
+      long long signed_count = -1;
+      s >> element >> signed_count;
+      if (!s || signed_count < 0)
+        throw fail("line " + std::to_string(line_no) + ": element '" + element + "' needs a non-negative count");
+      const auto count = static_cast<std::size_t>(signed_count);
       if (element == "vertex") data.vertex_count = count;
       else if (element == "face") face_count = count;
       else throw fail("line " + std::to_string(line_no) + ": unsupported element '" + element + "'");
@@ -167,11 +170,24 @@ PlyData read_ply(const std::filesystem::path& path) {
   if (!in) throw fail("header has no end_header line");
   if (face_count > 0 && !face.present) throw fail("face element without vertex_indices list");
 
+  // Counts are checked against the bytes left before anything is
+  // allocated: a header must not make us reserve more than the file holds.
+  const std::streamoff body_start = in.tellg();
+  in.seekg(0, std::ios::end);
+  const auto body_bytes = static_cast<double>(in.tellg() - body_start);
+  in.seekg(body_start);
+  std::size_t stride = 0;
+  for (const auto& p : data.vertex) stride += type_size(p.type);
+  const double needed =
+      binary ? static_cast<double>(stride) * static_cast<double>(data.vertex_count) +
+                   static_cast<double>(face_count) * static_cast<double>(type_size(face.count_type) + 3 * type_size(face.index_type))
+             : 2.0 * (static_cast<double>(data.vertex.size()) * static_cast<double>(data.vertex_count) + 4.0 * static_cast<double>(face_count));
+  if (needed > body_bytes)
+    throw fail("header announces " + std::to_string(data.vertex_count) + " vertices and " + std::to_string(face_count) +
+               " faces, but the file holds only " + std::to_string(static_cast<long long>(body_bytes)) + " bytes of data (truncated?)");
   for (auto& p : data.vertex) p.values.resize(data.vertex_count);
   data.faces.resize(face_count);
   if (binary) {
-    std::size_t stride = 0;
-    for (const auto& p : data.vertex) stride += type_size(p.type);
     std::vector<char> buf(stride * data.vertex_count);
     if (!in.read(buf.data(), static_cast<std::streamsize>(buf.size()))) throw fail("file ends inside the vertex data (truncated?)");
     const char* q = buf.data();
@@ -183,11 +199,14 @@ PlyData read_ply(const std::filesystem::path& path) {
     for (std::size_t f = 0; f < face_count; ++f) {
       char tmp[8];
       if (!in.read(tmp, static_cast<std::streamsize>(type_size(face.count_type)))) throw fail("file ends inside the face data (truncated?)");
-      auto n = static_cast<std::size_t>(get_value(tmp, face.count_type));
+      const double n = get_value(tmp, face.count_type);
       if (n != 3) throw fail("face " + std::to_string(f) + " has " + std::to_string(n) + " vertices; only triangles are supported");
       for (std::size_t k = 0; k < 3; ++k) {
         if (!in.read(tmp, static_cast<std::streamsize>(type_size(face.index_type)))) throw fail("file ends inside the face data (truncated?)");
-        data.faces[f][k] = static_cast<std::uint32_t>(get_value(tmp, face.index_type));
+        const double v = get_value(tmp, face.index_type);
+        if (!(v >= 0 && v < static_cast<double>(data.vertex_count)))
+          throw fail("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + " of " + std::to_string(data.vertex_count));
+        data.faces[f][k] = static_cast<std::uint32_t>(v);
       }
     }
   } else {

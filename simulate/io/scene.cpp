@@ -235,7 +235,7 @@ Scene load_scene(const std::filesystem::path& file) {
   if (!in) throw SceneError(file.string() + ": cannot open scene file");
   try {
     scene.document = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse errors, and numbers beyond double (1e400)
     throw SceneError(file.string() + ": not valid JSON: " + e.what());
   }
   JsonObject top(scene.document, "", file);
