@@ -1,0 +1,93 @@
+// The surface-texture kernels on the GPU against the same functors on the
+// host (label gpu; skipped, with the reason, where no GPU is present):
+// Eq. 7 (rigid particles -> texel temperatures) and the wetting history.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "../cuda_test_support.cuh"
+#include "backend/cpu_exec.h"
+#include "sph/boundary_akinci2012.h"
+#include "surface/texel_temperature_bonet2002.h"
+#include "surface/wetting_history_wang2005.h"
+
+namespace dp {
+namespace {
+
+using test::DeviceSet;
+
+class surface_CudaAgreement : public test::RequiresGpu {};
+
+TEST_F(surface_CudaAgreement, TexelTemperaturesAndWettingMatchTheHost) {
+  CudaExec gpu(0);
+  CpuExec cpu(2);
+  const float s = 0.01f;
+  const CubicSplineKernel kernel = CubicSplineKernel::with_support(2 * s);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  // A bumpy rigid sheet, texels on and near it, liquid above.
+  std::vector<Vec3> rigid, texel, normal, liquid;
+  for (int j = 0; j < 30; ++j)
+    for (int i = 0; i < 30; ++i) rigid.push_back(Vec3{i * s, 0.002f * u(rng), j * s});
+  for (int i = 0; i < 20000; ++i) {
+    texel.push_back(Vec3{0.29f * u(rng), 0.004f * u(rng), 0.29f * u(rng)});
+    normal.push_back(Vec3{0, 1, 0});
+  }
+  for (int i = 0; i < 2000; ++i) liquid.push_back(Vec3{0.29f * u(rng), 0.002f + 0.05f * u(rng), 0.29f * u(rng)});
+  UniformGrid g;
+  g.origin = Vec3{-0.05f, -0.05f, -0.05f};
+  g.cell_size = kernel.h;
+  g.nx = g.ny = g.nz = 20;
+  DeviceSet rigid_set, liquid_set;
+  rigid_set.build(gpu, rigid, g);
+  liquid_set.build(gpu, liquid, g);
+
+  std::vector<float> temperature;
+  for (std::size_t k = 0; k < rigid.size(); ++k) temperature.push_back(280.0f + 60.0f * u(rng));
+  temperature = rigid_set.to_sorted(temperature);
+  std::vector<float> volume(rigid.size());
+  cpu.parallel_for(rigid.size(), ComputeBoundaryVolume{rigid_set.host_view(), kernel, volume.data()});
+  // The first 600 of the 900 particles (setup order) are the texels' rigid.
+  const std::uint32_t first = 0, count = 600;
+
+  NeighborListBuffers<CpuExec> host_lists;
+  const NeighborList host_list = host_lists.build(cpu, texel, rigid_set.host_view(), kernel.h);
+  std::vector<float> host_T(texel.size(), 1.0f);
+  cpu.parallel_for(texel.size(), InterpolateTexelTemperature{host_list, texel.data(), rigid_set.host_position.data(), volume.data(),
+                                                             temperature.data(), rigid_set.host_order.data(), first, count,
+                                                             kernel, host_T.data()});
+  std::vector<float> host_wetting(texel.size(), 0.5f);
+  const float r2 = 2 * s * s;
+  cpu.parallel_for(texel.size(), RecordWetting{liquid_set.host_view(), texel.data(), normal.data(), r2, 0.9f, host_wetting.data()});
+
+  CudaExec::Buffer<Vec3> d_texel, d_normal;
+  CudaExec::Buffer<float> d_volume, d_temperature, d_T, d_wetting;
+  CudaExec::upload(d_texel, texel);
+  CudaExec::upload(d_normal, normal);
+  CudaExec::upload(d_volume, volume);
+  CudaExec::upload(d_temperature, temperature);
+  CudaExec::upload(d_T, std::vector<float>(texel.size(), 1.0f));
+  CudaExec::upload(d_wetting, std::vector<float>(texel.size(), 0.5f));
+  NeighborListBuffers<CudaExec> device_lists;
+  const NeighborList device_list = device_lists.build(gpu, d_texel, rigid_set.device_view(), kernel.h);
+  gpu.parallel_for(texel.size(), InterpolateTexelTemperature{device_list, CudaExec::ptr(d_texel), CudaExec::ptr(rigid_set.position),
+                                                             CudaExec::ptr(d_volume), CudaExec::ptr(d_temperature),
+                                                             CudaExec::ptr(rigid_set.grid.order), first, count, kernel,
+                                                             CudaExec::ptr(d_T)});
+  gpu.parallel_for(texel.size(), RecordWetting{liquid_set.device_view(), CudaExec::ptr(d_texel), CudaExec::ptr(d_normal), r2, 0.9f,
+                                               CudaExec::ptr(d_wetting)});
+  gpu.synchronize();
+  const std::vector<float> device_T = CudaExec::download(d_T), device_wetting = CudaExec::download(d_wetting);
+  int interpolated = 0;
+  for (std::size_t t = 0; t < texel.size(); ++t) {
+    ASSERT_NEAR(device_T[t], host_T[t], 1e-4f * host_T[t]) << "texel " << t;
+    ASSERT_EQ(device_wetting[t], host_wetting[t]) << "texel " << t;
+    interpolated += host_T[t] != 1.0f;
+  }
+  EXPECT_GT(interpolated, 10000);
+}
+
+}  // namespace
+}  // namespace dp
