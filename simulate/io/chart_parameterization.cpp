@@ -241,40 +241,69 @@ void flatten(const WeldedMesh& w, const std::vector<std::uint32_t>& faces, std::
       flatten(w, group, charts);
 }
 
+// Convex hull of points (Andrew's monotone chain), counter-clockwise.
+std::vector<V2> convex_hull(std::vector<V2> p) {
+  std::sort(p.begin(), p.end(), [](V2 a, V2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (p.size() < 3) return p;
+  auto turn = [](V2 o, V2 a, V2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+  std::vector<V2> h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && turn(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i > 0; --i) {
+    while (k >= lower && turn(h[k - 2], h[k - 1], p[i - 1]) <= 0) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
+// The direction of the chart's smallest-area bounding box: one of its
+// sides lies along an edge of the convex hull (Freeman & Shapira 1975).
+double box_angle(const std::vector<V2>& uv) {
+  const std::vector<V2> hull = convex_hull(uv);
+  double best_area = 1e300, best_angle = 0;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const V2 a = hull[i], b = hull[(i + 1) % hull.size()];
+    const double angle = std::atan2(b.y - a.y, b.x - a.x), cs = std::cos(angle), sn = std::sin(angle);
+    double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+    for (const V2& p : hull) {
+      const double x = cs * p.x + sn * p.y, y = -sn * p.x + cs * p.y;
+      lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x), lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
+    }
+    const double area = (hi_x - lo_x) * (hi_y - lo_y);
+    if (area < best_area * (1 - 1e-9)) best_area = area, best_angle = angle;
+  }
+  return best_angle;
+}
+
 // Scales a chart so UV area equals world area (every chart gets the same
-// texel density), turns it to its principal axes (tighter boxes) and moves
-// it to the origin.
+// texel density), turns it into its smallest bounding box, lying flat, and
+// moves it to the origin. Rotations keep the orientation.
 void normalise(const WeldedMesh& w, Chart& c) {
   double uv_area = 0, world_area = 0;
   for (std::size_t f = 0; f < c.faces.size(); ++f) uv_area += signed_uv_area(c, f), world_area += w.area[c.faces[f]];
   const double s = uv_area > 0 ? std::sqrt(world_area / uv_area) : 1;
-  V2 mean;
-  for (const V2& p : c.uv) mean.x += p.x / c.uv.size(), mean.y += p.y / c.uv.size();
-  double sxx = 0, sxy = 0, syy = 0;
-  for (const V2& p : c.uv) {
-    const double dx = p.x - mean.x, dy = p.y - mean.y;
-    sxx += dx * dx, sxy += dx * dy, syy += dy * dy;
-  }
-  const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
+  const double angle = box_angle(c.uv);
   const double cs = std::cos(angle), sn = std::sin(angle);
   V2 lo{1e300, 1e300}, hi{-1e300, -1e300};
   for (V2& p : c.uv) {
-    const double dx = p.x - mean.x, dy = p.y - mean.y;
-    p = V2{s * (cs * dx + sn * dy), s * (-sn * dx + cs * dy)};  // a rotation keeps the orientation
+    p = V2{s * (cs * p.x + sn * p.y), s * (-sn * p.x + cs * p.y)};
     lo.x = std::min(lo.x, p.x), lo.y = std::min(lo.y, p.y), hi.x = std::max(hi.x, p.x), hi.y = std::max(hi.y, p.y);
   }
   for (V2& p : c.uv) p.x -= lo.x, p.y -= lo.y;
   c.size = V2{hi.x - lo.x, hi.y - lo.y};
+  if (c.size.y > c.size.x) {  // lying flat packs shelves tighter
+    for (V2& p : c.uv) p = V2{c.size.y - p.y, p.x};
+    c.size = V2{c.size.y, c.size.x};
+  }
 }
 
-// Shelf packing, tallest first; returns the side of the square it fits in.
-double pack(std::vector<Chart>& charts, double gutter) {
-  std::vector<std::size_t> order(charts.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return charts[a].size.y > charts[b].size.y; });
-  double boxes = 0, widest = 0;
-  for (const Chart& c : charts) boxes += (c.size.x + gutter) * (c.size.y + gutter), widest = std::max(widest, c.size.x + gutter);
-  const double shelf_width = std::max(widest, std::sqrt(boxes));
+// Shelf packing, tallest first, into rows of at most `shelf_width`;
+// returns the side of the square the charts then fit in.
+double pack_shelves(std::vector<Chart>& charts, const std::vector<std::size_t>& order, double gutter, double shelf_width) {
   double x = 0, y = 0, shelf_height = 0, used_width = 0;
   for (std::size_t i : order) {
     Chart& c = charts[i];
@@ -285,6 +314,24 @@ double pack(std::vector<Chart>& charts, double gutter) {
     used_width = std::max(used_width, x);
   }
   return std::max(used_width, y + shelf_height);
+}
+
+// Tries shelf widths from the widest chart to all charts in one row and
+// keeps the one that gives the smallest square.
+double pack(std::vector<Chart>& charts, double gutter) {
+  std::vector<std::size_t> order(charts.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return charts[a].size.y > charts[b].size.y; });
+  double widest = 0, row = 0;
+  for (const Chart& c : charts) widest = std::max(widest, c.size.x + gutter), row += c.size.x + gutter;
+  constexpr int kTries = 48;
+  double best_width = widest, best_side = 1e300;
+  for (int k = 0; k <= kTries; ++k) {
+    const double width = widest * std::pow(row / widest, static_cast<double>(k) / kTries);
+    const double side = pack_shelves(charts, order, gutter, width);
+    if (side < best_side) best_side = side, best_width = width;
+  }
+  return pack_shelves(charts, order, gutter, best_width);
 }
 
 }  // namespace

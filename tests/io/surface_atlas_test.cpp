@@ -72,6 +72,10 @@ TEST(SurfaceAtlas, ACubeWithoutUvsGetsSixGutteredChartsCoveringItsArea) {
     ASSERT_NEAR(dot(n, x), 0.5f, 1e-5f);  // outward
   }
   EXPECT_LE(b.raster.max_coverage, 1 + 1e-6);
+  // Six squares in a square atlas: 6/9 of it at best with one row of three.
+  const double used = static_cast<double>(b.raster.texels.size()) / (256.0 * 256.0);
+  RecordProperty("atlas_fill", std::to_string(used));
+  EXPECT_GT(used, 0.5);
 }
 
 TEST(SurfaceAtlas, ASphereWithoutUvsIsParameterisedByCgal) {
@@ -105,6 +109,9 @@ TEST(SurfaceAtlas, TheDemoTrayWhoseFacesShareUvsGetsItsOwnAtlas) {
   Built b = build(std::filesystem::path(DEWPOINT_SOURCE_DIR) / "assets/meshes/tray.obj", 256);
   EXPECT_NE(b.atlas.uv_source.find("generated"), std::string::npos);
   EXPECT_NEAR(texel_area_sum(b.raster.texels), 0.36 + 4 * 0.6 * 0.2, 0.01 * 0.84);
+  const double used = static_cast<double>(b.raster.texels.size()) / (256.0 * 256.0);
+  RecordProperty("atlas_fill", std::to_string(used));
+  EXPECT_GT(used, 0.5);
 }
 
 TEST(MaxMass, ConstantTimesArea) {
