@@ -269,7 +269,7 @@ class SimulationImpl final : public Simulation {
 
     auto th = Clock::now();
     if (setup_.heat_conduction) conduct_heat(dt, liquid, rigid);
-    surfaces_.step(exec_, dt, rigid, rigid_volume_, rigid_temperature_, liquid, n);  // Alg. 1 line 14, wetting history
+    surfaces_.step(exec_, dt, rigid_temperature_, liquid, n);  // Alg. 1 line 14, wetting history
     exec_.synchronize();
     report.seconds_heat = seconds_since(th);
 

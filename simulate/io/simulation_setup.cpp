@@ -45,10 +45,15 @@ SurfaceTextureSetup make_surface_texture(const Scene& scene, std::size_t rigid_i
   AtlasRaster raster = rasterize_atlas(atlas, tex.width, tex.height);
   SurfaceTextureSetup s;
   s.texels = std::move(raster.texels);
-  if (tex.max_mass_image.empty())
+  if (tex.max_mass_image.empty()) {
     set_constant_max_mass(s.texels, tex.max_mass_kg_m2);
-  else
-    set_max_mass_from_image(s.texels, tex.max_mass_image, tex.max_mass_image_scale_kg_m2);
+  } else {
+    try {
+      set_max_mass_from_image(s.texels, tex.max_mass_image, tex.max_mass_image_scale_kg_m2);
+    } catch (const std::runtime_error& e) {
+      throw SceneError(key + ".max_mass_image: " + e.what());
+    }
+  }
   // Texel masses are 64-bit counts of a unit tied to the particle mass
   // (surface/texel_mass_units.h); say so when a texel's cap exceeds them.
   const double particle_mass = scene.simulation.liquid.rest_density_kg_m3 * std::pow(scene.simulation.particle_spacing_m, 3);

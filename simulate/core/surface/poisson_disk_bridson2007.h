@@ -5,7 +5,8 @@
 // candidates uniformly from the annulus [r, 2r) around an active sample and
 // keeps one when no sample lies closer than r; on a surface the annulus is
 // the part of the surface in the spherical shell, represented by the texels
-// in it, drawn with probability proportional to their area. Bridson's active
+// in it, drawn with probability proportional to their area (an active
+// sample that succeeds tries again before another is drawn). Bridson's active
 // list only grows within reach of the first sample, so disconnected parts of
 // the surface get a new start; a final sweep over all texels makes the set
 // maximal at texel resolution: every texel lies within r of a sample.

@@ -41,6 +41,7 @@ class SurfaceTextures {
     Buffer<Vec3> seed_position, seed_normal;
     Buffer<std::uint32_t> seed_texel_offset, seed_texel_index;
     NeighborListBuffers<Exec> rigid_neighbours;  // texel -> sorted rigid particles within h
+    Buffer<float> rigid_weight;                  // Eq. 7's V_k W-bar_tk per neighbour-list entry
 
     std::size_t size() const { return setup.texels.size(); }
     NeighborList rigid_list() const { return NeighborList{Exec::ptr(rigid_neighbours.offset), Exec::ptr(rigid_neighbours.index)}; }
@@ -53,7 +54,6 @@ class SurfaceTextures {
     kernel_ = CubicSplineKernel::with_support(setup.support_radius());
     kg_per_unit_ = kg_per_texel_unit(setup.particle_mass());
     contact_radius_ = kWettingContactSpacings * setup.particle_spacing;
-    rigid_source_ = rigid_order;
     textures_.clear();
     textures_.resize(setup.surfaces.size());
     for (std::size_t i = 0; i < setup.surfaces.size(); ++i) {
@@ -64,15 +64,21 @@ class SurfaceTextures {
       tex.seeds = make_seeding_points(s.texels, setup.particle_spacing);
       upload_static(tex, setup.particle_mass());
       tex.rigid_neighbours.build(exec, tex.position, rigid, kernel_.h);
+      tex.rigid_weight.resize(tex.rigid_neighbours.index.size());
+      exec.parallel_for(tex.size(), ComputeTexelWeights{tex.rigid_list(), Exec::ptr(tex.position), rigid.position,
+                                                        Exec::ptr(rigid_volume), Exec::ptr(rigid_order),
+                                                        static_cast<std::uint32_t>(s.rigid_first),
+                                                        static_cast<std::uint32_t>(s.rigid_count), kernel_,
+                                                        Exec::ptr(tex.rigid_weight)});
     }
-    interpolate_temperatures(exec, rigid, rigid_volume, rigid_temperature);
+    interpolate_temperatures(exec, rigid_temperature);
   }
 
   // Alg. 1 line 14 (rigid particles -> texels, Eq. 7) and the wetting
   // history of this step's liquid particles.
-  void step(const Exec& exec, float dt, const GridView& rigid, const Buffer<float>& rigid_volume,
-            const Buffer<float>& rigid_temperature, const GridView& liquid, std::size_t liquid_count) {
-    interpolate_temperatures(exec, rigid, rigid_volume, rigid_temperature);
+  void step(const Exec& exec, float dt, const Buffer<float>& rigid_temperature, const GridView& liquid,
+            std::size_t liquid_count) {
+    interpolate_temperatures(exec, rigid_temperature);
     record_wetting(exec, dt, liquid, liquid_count);
   }
 
@@ -134,29 +140,29 @@ class SurfaceTextures {
     Exec::upload(tex.seed_texel_index, tex.seeds.texel_index);
   }
 
-  void interpolate_temperatures(const Exec& exec, const GridView& rigid, const Buffer<float>& rigid_volume,
-                                const Buffer<float>& rigid_temperature) {
+  void interpolate_temperatures(const Exec& exec, const Buffer<float>& rigid_temperature) {
     for (Texture& tex : textures_)
-      exec.parallel_for(tex.size(), InterpolateTexelTemperature{
-                                        tex.rigid_list(), Exec::ptr(tex.position), rigid.position, Exec::ptr(rigid_volume),
-                                        Exec::ptr(rigid_temperature), Exec::ptr(rigid_source_),
-                                        static_cast<std::uint32_t>(tex.setup.rigid_first),
-                                        static_cast<std::uint32_t>(tex.setup.rigid_count), kernel_, Exec::ptr(tex.temperature)});
+      exec.parallel_for(tex.size(), InterpolateTexelTemperature{tex.rigid_list(), Exec::ptr(tex.rigid_weight),
+                                                                Exec::ptr(rigid_temperature), Exec::ptr(tex.temperature)});
   }
 
   void record_wetting(const Exec& exec, float dt, const GridView& liquid, std::size_t liquid_count) {
+    if (textures_.empty()) return;
+    const std::size_t cells = liquid.grid.cell_count();
+    near_liquid_.resize(cells);
+    exec.parallel_for(cells, MarkCellsNearLiquid{liquid, Exec::ptr(near_liquid_)});
     for (Texture& tex : textures_) {
       const float decay = tex.setup.wetting_decay;
       const float dry = decay > 0 ? std::exp(-dt / decay) : 0.0f;
       // Without liquid nothing touches; the history only fades.
       const float r2 = liquid_count > 0 ? contact_radius_ * contact_radius_ : -1.0f;
-      exec.parallel_for(tex.size(), RecordWetting{liquid, Exec::ptr(tex.position), Exec::ptr(tex.normal), r2, dry,
-                                                  Exec::ptr(tex.wetting)});
+      exec.parallel_for(tex.size(), RecordWetting{liquid, Exec::ptr(near_liquid_), Exec::ptr(tex.position), Exec::ptr(tex.normal),
+                                                  r2, dry, Exec::ptr(tex.wetting)});
     }
   }
 
   std::vector<Texture> textures_;
-  Buffer<std::uint32_t> rigid_source_;
+  Buffer<std::uint8_t> near_liquid_;  // per liquid grid cell, this step
   CubicSplineKernel kernel_{};
   double kg_per_unit_ = 0;
   float contact_radius_ = 0;

@@ -54,16 +54,19 @@ TEST_F(surface_CudaAgreement, TexelTemperaturesAndWettingMatchTheHost) {
 
   NeighborListBuffers<CpuExec> host_lists;
   const NeighborList host_list = host_lists.build(cpu, texel, rigid_set.host_view(), kernel.h);
-  std::vector<float> host_T(texel.size(), 1.0f);
-  cpu.parallel_for(texel.size(), InterpolateTexelTemperature{host_list, texel.data(), rigid_set.host_position.data(), volume.data(),
-                                                             temperature.data(), rigid_set.host_order.data(), first, count,
-                                                             kernel, host_T.data()});
+  std::vector<float> host_weight(host_lists.index.size()), host_T(texel.size(), 1.0f);
+  cpu.parallel_for(texel.size(), ComputeTexelWeights{host_list, texel.data(), rigid_set.host_position.data(), volume.data(),
+                                                     rigid_set.host_order.data(), first, count, kernel, host_weight.data()});
+  cpu.parallel_for(texel.size(), InterpolateTexelTemperature{host_list, host_weight.data(), temperature.data(), host_T.data()});
   std::vector<float> host_wetting(texel.size(), 0.5f);
   const float r2 = 2 * s * s;
-  cpu.parallel_for(texel.size(), RecordWetting{liquid_set.host_view(), texel.data(), normal.data(), r2, 0.9f, host_wetting.data()});
+  std::vector<std::uint8_t> host_near(g.cell_count());
+  cpu.parallel_for(host_near.size(), MarkCellsNearLiquid{liquid_set.host_view(), host_near.data()});
+  cpu.parallel_for(texel.size(), RecordWetting{liquid_set.host_view(), host_near.data(), texel.data(), normal.data(), r2, 0.9f,
+                                               host_wetting.data()});
 
   CudaExec::Buffer<Vec3> d_texel, d_normal;
-  CudaExec::Buffer<float> d_volume, d_temperature, d_T, d_wetting;
+  CudaExec::Buffer<float> d_volume, d_temperature, d_T, d_wetting, d_weight;
   CudaExec::upload(d_texel, texel);
   CudaExec::upload(d_normal, normal);
   CudaExec::upload(d_volume, volume);
@@ -72,11 +75,16 @@ TEST_F(surface_CudaAgreement, TexelTemperaturesAndWettingMatchTheHost) {
   CudaExec::upload(d_wetting, std::vector<float>(texel.size(), 0.5f));
   NeighborListBuffers<CudaExec> device_lists;
   const NeighborList device_list = device_lists.build(gpu, d_texel, rigid_set.device_view(), kernel.h);
-  gpu.parallel_for(texel.size(), InterpolateTexelTemperature{device_list, CudaExec::ptr(d_texel), CudaExec::ptr(rigid_set.position),
-                                                             CudaExec::ptr(d_volume), CudaExec::ptr(d_temperature),
-                                                             CudaExec::ptr(rigid_set.grid.order), first, count, kernel,
+  d_weight.resize(device_lists.index.size());
+  gpu.parallel_for(texel.size(), ComputeTexelWeights{device_list, CudaExec::ptr(d_texel), CudaExec::ptr(rigid_set.position),
+                                                     CudaExec::ptr(d_volume), CudaExec::ptr(rigid_set.grid.order), first, count,
+                                                     kernel, CudaExec::ptr(d_weight)});
+  gpu.parallel_for(texel.size(), InterpolateTexelTemperature{device_list, CudaExec::ptr(d_weight), CudaExec::ptr(d_temperature),
                                                              CudaExec::ptr(d_T)});
-  gpu.parallel_for(texel.size(), RecordWetting{liquid_set.device_view(), CudaExec::ptr(d_texel), CudaExec::ptr(d_normal), r2, 0.9f,
+  CudaExec::Buffer<std::uint8_t> d_near(g.cell_count());
+  gpu.parallel_for(g.cell_count(), MarkCellsNearLiquid{liquid_set.device_view(), CudaExec::ptr(d_near)});
+  EXPECT_EQ(CudaExec::download(d_near), host_near);
+  gpu.parallel_for(texel.size(), RecordWetting{liquid_set.device_view(), CudaExec::ptr(d_near), CudaExec::ptr(d_texel), CudaExec::ptr(d_normal), r2, 0.9f,
                                                CudaExec::ptr(d_wetting)});
   gpu.synchronize();
   const std::vector<float> device_T = CudaExec::download(d_T), device_wetting = CudaExec::download(d_wetting);

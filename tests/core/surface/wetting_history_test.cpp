@@ -35,7 +35,9 @@ struct LiquidGrid {
 
 void record(const CpuExec& exec, const LiquidGrid& liquid, const TexelGeometry& g, float dry, std::vector<float>& wetting) {
   const float r = kWettingContactSpacings * kSpacing;
-  exec.parallel_for(g.size(), RecordWetting{liquid.view(), g.position.data(), g.normal.data(), r * r, dry, wetting.data()});
+  std::vector<std::uint8_t> near(liquid.grid.grid.cell_count());
+  exec.parallel_for(near.size(), MarkCellsNearLiquid{liquid.view(), near.data()});
+  exec.parallel_for(g.size(), RecordWetting{liquid.view(), near.data(), g.position.data(), g.normal.data(), r * r, dry, wetting.data()});
 }
 
 TEST(WettingHistory, AParticleWetsTheDiscUnderItOnTheFrontSideOnly) {
