@@ -99,6 +99,20 @@ TEST(SurfaceAtlas, ASphereWithoutUvsIsParameterisedByCgal) {
   EXPECT_GT(full, static_cast<int>(0.8 * b.raster.texels.size()));
 }
 
+TEST(SurfaceAtlas, ATorusWhoseChartsAreRingsIsCutIntoDiscs) {
+  Built b = build(test::torus_without_uvs(1.0, 0.3, 48, 24), 512);
+  const double sum = texel_area_sum(b.raster.texels);
+  RecordProperty("relative_area_error", std::to_string(sum / b.mesh.area() - 1));
+  EXPECT_NEAR(sum / b.mesh.area(), 1.0, 0.01);
+  EXPECT_LE(b.raster.max_coverage, 1 + 1e-6);
+  EXPECT_LT(b.raster.lost_area, 1e-9);
+  // On the torus: distance r from the core circle, up to the facets' sag.
+  for (const Vec3& x : b.raster.texels.position) {
+    const double ring = std::sqrt(double(x.x) * x.x + double(x.z) * x.z) - 1.0;
+    ASSERT_NEAR(std::sqrt(ring * ring + double(x.y) * x.y), 0.3, 0.01);
+  }
+}
+
 TEST(SurfaceAtlas, OverlappingAssetUvsAreReplaced) {
   Built b = build(test::plane_with_uvs("mirrored", 0.4f, 0.2f, 4, 0.0f, 1.0f, true), 128);
   EXPECT_NE(b.atlas.uv_source.find("overlapping"), std::string::npos) << b.atlas.uv_source;

@@ -89,4 +89,25 @@ inline std::filesystem::path sphere_without_uvs(int levels) {
   return file;
 }
 
+// A torus (radii R, r) of n x m quads, outward faces, no UVs: genus one, so
+// some of its normal-direction charts are rings, not discs.
+inline std::filesystem::path torus_without_uvs(double R, double r, int n, int m) {
+  auto file = test_dir("meshes") / "torus.obj";
+  std::ofstream out(file);
+  out.precision(9);
+  const double pi = 3.14159265358979;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double u = 2 * pi * i / n, v = 2 * pi * j / m;
+      out << "v " << (R + r * std::cos(v)) * std::cos(u) << " " << r * std::sin(v) << " " << (R + r * std::cos(v)) * std::sin(u) << "\n";
+    }
+  auto id = [&](int i, int j) { return ((i % n) * m + (j % m)) + 1; };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      out << "f " << id(i, j) << " " << id(i, j + 1) << " " << id(i + 1, j + 1) << "\n";
+      out << "f " << id(i, j) << " " << id(i + 1, j + 1) << " " << id(i + 1, j) << "\n";
+    }
+  return file;
+}
+
 }  // namespace dp::io::test
