@@ -59,6 +59,11 @@ struct SurfaceSnapshot {
   std::vector<float> temperature;          // T_t (K)
   std::vector<float> wetting;              // wetting history in [0, 1]
   std::size_t size() const { return pixel.size(); }
+  TexelMassSum total_mass() const {
+    TexelMassSum sum;
+    for (TexelMassUnits m : mass_units) sum.add(m);
+    return sum;
+  }
 };
 
 }  // namespace dp

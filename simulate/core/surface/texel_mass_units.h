@@ -47,4 +47,24 @@ DP_HD inline double kg_of_texel_units(TexelMassUnits units, double kg_per_unit) 
   return static_cast<double>(units) * kg_per_unit;
 }
 
+// An exact, order-independent sum of texel masses for the water ledger
+// (DESIGN §6), which 64 bits of texel units would overflow beyond 256
+// particles: whole liquid mass units plus a remainder below one of them.
+struct TexelMassSum {
+  std::uint64_t mass_units = 0;   // liquid mass units (sph/mass_units.h)
+  std::uint64_t texel_units = 0;  // and texel units, < kTexelUnitsPerMassUnit
+
+  void add(TexelMassUnits m) {
+    mass_units += m >> kTexelUnitShift;
+    texel_units += m & (kTexelUnitsPerMassUnit - 1);
+    mass_units += texel_units >> kTexelUnitShift;
+    texel_units &= kTexelUnitsPerMassUnit - 1;
+  }
+  double kg(double kg_per_unit) const {
+    return (static_cast<double>(mass_units) * static_cast<double>(kTexelUnitsPerMassUnit) + static_cast<double>(texel_units)) *
+           kg_per_unit;
+  }
+  bool operator==(const TexelMassSum& o) const { return mass_units == o.mass_units && texel_units == o.texel_units; }
+};
+
 }  // namespace dp

@@ -44,5 +44,19 @@ TEST(TexelMassUnits, MassBeyondSixtyFourBitsIsAClearError) {
   EXPECT_THROW(texel_units_of_kg(-1.0, particle_mass), std::invalid_argument);
 }
 
+TEST(TexelMassUnits, SumsAreExactBeyondSixtyFourBits) {
+  // 1000 texels near the 64-bit limit: the total needs more than 64 bits.
+  TexelMassSum sum;
+  unsigned __int128 reference = 0;
+  std::uint64_t x = 88172645463325252ull;
+  for (int i = 0; i < 1000; ++i) {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;  // xorshift64
+    sum.add(x);
+    reference += x;
+  }
+  EXPECT_EQ(sum.texel_units, static_cast<std::uint64_t>(reference & (kTexelUnitsPerMassUnit - 1)));
+  EXPECT_EQ(sum.mass_units, static_cast<std::uint64_t>(reference >> kTexelUnitShift));
+}
+
 }  // namespace
 }  // namespace dp

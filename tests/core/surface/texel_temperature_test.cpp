@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cfloat>
+#include <algorithm>
 #include <cmath>
 
 #include "surface_scenes.h"
@@ -108,6 +109,26 @@ TEST(TexelTemperature, TexelsOutOfReachKeepTheirInitialTemperature) {
   sim->step();
   const SurfaceSnapshot s = sim->surfaces().at(0);
   for (float T : s.temperature) EXPECT_EQ(T, 123.0f);
+}
+
+// Not Eq. 7, but the same set-up path: the initial mass texture is
+// min(initial * A_t, m_t^max), rounded down to whole texel units.
+TEST(SurfaceSetup, InitialMassIsCappedPerTexelAndExact) {
+  TexelGeometry texels = test::lattice_texels(30, 0.005f, 0.0f);  // max 0.05 kg/m^2
+  PlateRun run(texels);
+  run.setup.surfaces[0].initial_mass_per_area = 0.03f;
+  run.setup.surfaces[0].texels.max_mass[7] = 0.01f * 0.005f * 0.005f;  // one texel holds less
+  auto sim = make_simulation(ExecutionConfig{Device::Cpu, 1}, run.setup);
+  const SurfaceSnapshot s = sim->surfaces().at(0);
+  double expected = 0;
+  for (std::size_t t = 0; t < s.size(); ++t) {
+    const double kg = std::min(0.03 * texels.area[t], static_cast<double>(run.setup.surfaces[0].texels.max_mass[t]));
+    expected += kg;
+    EXPECT_LE(kg_of_texel_units(s.mass_units[t], s.kg_per_unit), kg);
+    EXPECT_GT(kg_of_texel_units(s.mass_units[t] + 1, s.kg_per_unit), kg * (1 - 1e-6));
+  }
+  EXPECT_NEAR(s.total_mass().kg(s.kg_per_unit), expected, 1e-6 * expected);
+  EXPECT_NEAR(kg_of_texel_units(s.mass_units[7], s.kg_per_unit), 0.01 * 0.005 * 0.005, 1e-6 * 0.01 * 0.005 * 0.005);
 }
 
 TEST(TexelTemperature, SameOnOneAndTwoThreads) {
