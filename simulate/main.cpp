@@ -12,6 +12,7 @@
 #include "scene.h"
 #include "simulation.h"
 #include "simulation_setup.h"
+#include "surface_frames.h"
 
 namespace fs = std::filesystem;
 
@@ -30,7 +31,8 @@ int run(const Options& opt) {
   // Everything that can be wrong with the input is found before any output
   // exists: scene, meshes, frame range, device.
   dp::io::Scene scene = dp::io::load_scene(opt.scene);
-  dp::SimulationSetup setup = dp::io::make_simulation_setup(scene);
+  std::vector<dp::io::RigidAtlas> atlases;
+  dp::SimulationSetup setup = dp::io::make_simulation_setup(scene, &atlases);
   dp::io::FrameRange range = opt.frames.empty() ? dp::io::FrameRange{} : dp::io::parse_frame_range(opt.frames);
   dp::ExecutionConfig exec{dp::parse_device(opt.device), dp::resolve_thread_count(opt.threads)};
 
@@ -59,6 +61,11 @@ int run(const Options& opt) {
   manifest.extra["scene"] = scene.document;
   dp::io::write_rigid_particles(frames_dir / manifest.rigid_particles_file, simulation->rigid_particles(),
                                 simulation->rigid_volumes(), simulation->rigid_temperatures(), comment);
+  for (std::size_t r = 0; r < atlases.size(); ++r) {
+    const std::string& name = atlases[r].rigid_name;
+    manifest.rigids.push_back({name, "rigid_" + name + ".ply", {setup.surfaces[r].texels.width, setup.surfaces[r].texels.height}});
+    dp::io::write_rigid_atlas_mesh(frames_dir / manifest.rigids.back().mesh_file, atlases[r].mesh, comment);
+  }
 
   const double frame_interval = 1.0 / sim.frame_rate_hz;
   dp::io::Progress progress("simulate " + scene.name, last_frame + 1, opt.quiet);
@@ -76,6 +83,12 @@ int run(const Options& opt) {
     entry.particles_file = dp::io::frame_file_name("particles", frame, "ply");
     dp::io::write_particle_frame(frames_dir / entry.particles_file, particles,
                                  static_cast<float>(manifest.particle_radius_m), comment);
+    const std::vector<dp::SurfaceSnapshot> surfaces = simulation->surfaces();
+    for (std::size_t r = 0; r < surfaces.size(); ++r) {
+      const std::string file = dp::io::frame_file_name("surface_" + atlases[r].rigid_name, frame, "exr");
+      dp::io::write_surface_frame(frames_dir / file, surfaces[r]);
+      entry.surface_files[atlases[r].rigid_name] = file;
+    }
     manifest.frames.push_back(entry);
     dp::io::write_manifest(frames_dir, manifest);
     const dp::StepReport& last = simulation->last_step();

@@ -9,6 +9,7 @@
 
 #include "backend/device.h"
 #include "math/vec3.h"
+#include "surface/surface_texture_setup.h"
 
 namespace dp {
 
@@ -63,6 +64,7 @@ struct SimulationSetup {
   std::vector<float> rigid_temperature;   // K, per rigid particle
   std::vector<std::uint8_t> rigid_held;   // 1: held at its temperature (a heated plate)
   std::vector<float> rigid_adhesion;      // beta of Akinci et al. 2013 per rigid particle; empty: none
+  std::vector<SurfaceTextureSetup> surfaces;  // textured rigids' static textures (paper Sec. 4.3)
 
   float support_radius() const { return 2.0f * particle_spacing; }
   float particle_mass() const {
@@ -109,6 +111,7 @@ class Simulation {
   virtual std::vector<Vec3> rigid_particles() const = 0;
   virtual std::vector<float> rigid_volumes() const = 0;
   virtual std::vector<float> rigid_temperatures() const = 0;  // in the order of rigid_particles()
+  virtual std::vector<SurfaceSnapshot> surfaces() const = 0;  // in the order of SimulationSetup::surfaces
   virtual std::int64_t step_count() const = 0;
   virtual double time() const = 0;  // s
   virtual std::string backend_name() const = 0;

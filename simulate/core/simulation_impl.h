@@ -17,6 +17,7 @@
 #include "sph/surface_tension_akinci2013.h"
 #include "sph/time_step.h"
 #include "sph/viscosity_xsph.h"
+#include "surface/surface_textures.h"
 
 namespace dp {
 
@@ -98,6 +99,7 @@ class SimulationImpl final : public Simulation {
                                                                       : std::vector<float>(n, setup.liquid.temperature));
     resize_scratch(n);
     prepare_rigids(setup);
+    surfaces_.prepare(exec_, setup, rigid_grid_.view(rigid_position_), rigid_grid_.order, rigid_volume_, rigid_temperature_);
     area_calibration_ = flat_face_area_calibration(kernel_, setup.particle_spacing);
     heat_dt_limit_ = heat_time_step_limit_of(setup);
   }
@@ -131,6 +133,7 @@ class SimulationImpl final : public Simulation {
   std::vector<Vec3> rigid_particles() const override { return Exec::download(rigid_position_); }
   std::vector<float> rigid_volumes() const override { return Exec::download(rigid_volume_); }
   std::vector<float> rigid_temperatures() const override { return Exec::download(rigid_temperature_); }
+  std::vector<SurfaceSnapshot> surfaces() const override { return surfaces_.snapshots(); }
   std::int64_t step_count() const override { return steps_; }
   double time() const override { return time_; }
   std::string backend_name() const override { return Exec::name(); }
@@ -266,6 +269,7 @@ class SimulationImpl final : public Simulation {
 
     auto th = Clock::now();
     if (setup_.heat_conduction) conduct_heat(dt, liquid, rigid);
+    surfaces_.step(exec_, dt, rigid_temperature_, liquid, n);  // Alg. 1 line 14, wetting history
     exec_.synchronize();
     report.seconds_heat = seconds_since(th);
 
@@ -423,6 +427,7 @@ class SimulationImpl final : public Simulation {
   double time_ = 0;
   float last_max_acceleration_ = 0;
   StepReport report_;
+  SurfaceTextures<Exec> surfaces_;
 };
 
 }  // namespace dp

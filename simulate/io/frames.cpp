@@ -73,13 +73,19 @@ void write_manifest(const std::filesystem::path& frames_dir, const FramesManifes
   j["particle_spacing_m"] = m.particle_spacing_m;
   j["particle_radius_m"] = m.particle_radius_m;
   j["rigid_particles"] = m.rigid_particles_file;
+  j["rigids"] = nlohmann::json::array();
+  for (const auto& r : m.rigids)
+    j["rigids"].push_back({{"name", r.name}, {"mesh", r.mesh_file}, {"texture_resolution", r.texture_resolution}});
   j["frames"] = nlohmann::json::array();
-  for (const auto& f : m.frames)
+  for (const auto& f : m.frames) {
+    nlohmann::json files = {{"particles", f.particles_file}};
+    if (!f.surface_files.empty()) files["surfaces"] = f.surface_files;
     j["frames"].push_back({{"index", f.index},
                            {"time_s", f.time_s},
                            {"step", f.step},
                            {"liquid_particles", f.liquid_particles},
-                           {"files", {{"particles", f.particles_file}}}});
+                           {"files", files}});
+  }
   write_atomically(frames_dir / kManifestName, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 
@@ -115,6 +121,13 @@ FramesManifest read_manifest(const std::filesystem::path& frames_dir) {
     m.particle_spacing_m = need(j, "particle_spacing_m", "").get<double>();
     m.particle_radius_m = need(j, "particle_radius_m", "").get<double>();
     m.rigid_particles_file = file_name(need(j, "rigid_particles", ""), "rigid_particles");
+    if (j.contains("rigids"))  // absent in frames written before surface textures
+      for (std::size_t i = 0; i < j["rigids"].size(); ++i) {
+        const std::string where = "rigids[" + std::to_string(i) + "].";
+        const auto& r = j["rigids"][i];
+        m.rigids.push_back(RigidSurfaceEntry{need(r, "name", where).get<std::string>(), file_name(need(r, "mesh", where), where + "mesh"),
+                                             need(r, "texture_resolution", where).get<std::array<int, 2>>()});
+      }
     const auto& frames = need(j, "frames", "");
     for (std::size_t i = 0; i < frames.size(); ++i) {
       std::string where = "frames[" + std::to_string(i) + "].";
@@ -125,12 +138,15 @@ FramesManifest read_manifest(const std::filesystem::path& frames_dir) {
       e.step = need(f, "step", where).get<std::int64_t>();
       e.liquid_particles = need(f, "liquid_particles", where).get<std::size_t>();
       e.particles_file = file_name(need(need(f, "files", where), "particles", where + "files."), where + "files.particles");
+      if (f["files"].contains("surfaces"))
+        for (const auto& [rigid, name] : f["files"]["surfaces"].items())
+          e.surface_files[rigid] = file_name(name, where + "files.surfaces." + rigid);
       m.frames.push_back(e);
     }
     m.extra = j;
     return m;
-  } catch (const nlohmann::json::type_error& e) {
-    throw std::runtime_error(file.string() + ": wrong type: " + e.what());
+  } catch (const nlohmann::json::exception& e) {  // wrong types, arrays of the wrong length
+    throw std::runtime_error(file.string() + ": wrong type or size: " + e.what());
   }
 }
 

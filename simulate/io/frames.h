@@ -1,7 +1,9 @@
 #pragma once
 // The frames folder (docs/file-formats.md): particle PLYs per frame, rigid
 // particles once, and manifest.json describing them.
+#include <array>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,14 @@ struct FrameEntry {
   std::int64_t step = 0;
   std::size_t liquid_particles = 0;
   std::string particles_file;  // relative to the frames folder
+  std::map<std::string, std::string> surface_files;  // rigid name -> surface_NAME.%04d.exr
+};
+
+// A textured rigid (docs/file-formats.md): its atlas mesh and texture size.
+struct RigidSurfaceEntry {
+  std::string name;
+  std::string mesh_file;  // rigid_NAME.ply
+  std::array<int, 2> texture_resolution{0, 0};
 };
 
 struct FramesManifest {
@@ -34,6 +44,7 @@ struct FramesManifest {
   double particle_spacing_m = 0;
   double particle_radius_m = 0;
   std::string rigid_particles_file;
+  std::vector<RigidSurfaceEntry> rigids;
   std::vector<FrameEntry> frames;
   nlohmann::json extra;  // generator, settings, the scene document
 };

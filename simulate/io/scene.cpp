@@ -1,5 +1,6 @@
 #include "scene.h"
 
+#include <cctype>
 #include <fstream>
 
 namespace dp::io {
@@ -27,6 +28,39 @@ bool inside(const Vec3d& p, const Vec3d& lo, const Vec3d& hi) {
   for (int a = 0; a < 3; ++a)
     if (p[a] < lo[a] || p[a] > hi[a]) return false;
   return true;
+}
+
+double non_negative(JsonObject& o, const std::string& key, double value) {
+  if (!(value >= 0)) throw o.error(key, "expected a non-negative number, found " + std::to_string(value));
+  return value;
+}
+
+// rigids[i].texture: the rigid's surface textures (paper Sec. 4.3).
+TextureSettings read_texture(JsonObject o, const std::filesystem::path& scene_dir) {
+  TextureSettings t;
+  // 16384^2 texels of four channels is already 4 GiB per frame.
+  constexpr std::int64_t kMaxResolution = 16384;
+  const auto res = o.int2("resolution");
+  if (res[0] <= 0 || res[1] <= 0 || res[0] > kMaxResolution || res[1] > kMaxResolution)
+    throw o.error("resolution", "expected two integers in [1, " + std::to_string(kMaxResolution) + "] (texels), found [" +
+                                    std::to_string(res[0]) + ", " + std::to_string(res[1]) + "]");
+  t.width = static_cast<int>(res[0]);
+  t.height = static_cast<int>(res[1]);
+  if (o.has("max_mass_image")) {
+    if (o.has("max_mass_kg_m2")) throw o.error("max_mass_kg_m2", "give either max_mass_kg_m2 or max_mass_image, not both");
+    std::filesystem::path image = o.string("max_mass_image");
+    t.max_mass_image = image.is_absolute() ? image : (scene_dir / image).lexically_normal();
+    if (!std::ifstream(t.max_mass_image)) throw o.error("max_mass_image", "cannot read image file " + t.max_mass_image.string());
+    t.max_mass_image_scale_kg_m2 =
+        non_negative(o, "max_mass_image_scale_kg_m2", o.number("max_mass_image_scale_kg_m2", t.max_mass_image_scale_kg_m2));
+  } else {
+    if (o.has("max_mass_image_scale_kg_m2")) throw o.error("max_mass_image_scale_kg_m2", "only allowed with max_mass_image");
+    t.max_mass_kg_m2 = non_negative(o, "max_mass_kg_m2", o.number("max_mass_kg_m2", t.max_mass_kg_m2));
+  }
+  t.initial_mass_kg_m2 = non_negative(o, "initial_mass_kg_m2", o.number("initial_mass_kg_m2", t.initial_mass_kg_m2));
+  t.wetting_decay_s = non_negative(o, "wetting_decay_s", o.number("wetting_decay_s", t.wetting_decay_s));
+  o.finish();
+  return t;
 }
 
 LiquidSettings read_liquid(JsonObject o) {
@@ -105,6 +139,14 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
     rigid.hold_temperature = r.boolean("hold_temperature", false);
     rigid.adhesion = r.number("adhesion", 0);
     if (rigid.adhesion < 0) throw r.error("adhesion", "expected a non-negative number");
+    if (auto texture = r.optional_object("texture")) {
+      rigid.texture = read_texture(*texture, scene_dir);
+      // The name becomes part of file names (rigid_NAME.ply, surface_NAME.%04d.exr).
+      for (char c : rigid.name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-')
+          throw r.error("name", "a textured rigid's name may hold only letters, digits, '_' and '-' (it names its files); found '" +
+                                    rigid.name + "'");
+    }
     r.finish();
     s.rigids.push_back(rigid);
   }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,12 +26,23 @@ struct LiquidBlock {
   Vec3d velocity_m_s{0, 0, 0};
 };
 
+// A rigid's surface textures (paper Sec. 4.3; docs/scene-format.md).
+struct TextureSettings {
+  int width = 0, height = 0;                 // texels
+  double max_mass_kg_m2 = 0.05;              // m_t^max per area when no image is given
+  std::filesystem::path max_mass_image;      // empty: the constant above
+  double max_mass_image_scale_kg_m2 = 0.05;  // kg/m^2 at image value 1
+  double initial_mass_kg_m2 = 0;             // clamped to m_t^max per texel
+  double wetting_decay_s = 1;                // time for the wetting history to fall by 1/e
+};
+
 struct RigidObject {
   std::string name;
   std::filesystem::path mesh;  // resolved against the scene file's folder
   double temperature_k = 293.15;
   bool hold_temperature = false;  // held at temperature_k (a heated plate, a cooled mirror)
   double adhesion = 0;            // beta of Akinci et al. 2013
+  std::optional<TextureSettings> texture;  // none: the rigid has no surface textures
 };
 
 struct RigidMaterialSettings {

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "rigid/sample_surface.h"
+#include "atlas_rasterization.h"
+#include "max_mass_texture.h"
 #include "triangle_mesh.h"
 
 namespace dp::io {
@@ -29,7 +31,47 @@ std::vector<Vec3> fill_block(const LiquidBlock& block, double spacing) {
   return points;
 }
 
-SimulationSetup make_simulation_setup(const Scene& scene) {
+SurfaceTextureSetup make_surface_texture(const Scene& scene, std::size_t rigid_index, const TriangleMesh& mesh,
+                                         AtlasMesh* atlas_out) {
+  const RigidObject& rigid = scene.simulation.rigids[rigid_index];
+  const TextureSettings& tex = *rigid.texture;
+  const std::string key = scene.file.string() + ": simulation.rigids[" + std::to_string(rigid_index) + "].texture";
+  AtlasMesh atlas;
+  try {
+    atlas = make_surface_atlas(mesh, tex.width, tex.height, rigid.mesh.string());
+  } catch (const std::runtime_error& e) {
+    throw SceneError(key + ": " + e.what());
+  }
+  AtlasRaster raster = rasterize_atlas(atlas, tex.width, tex.height);
+  SurfaceTextureSetup s;
+  s.texels = std::move(raster.texels);
+  if (tex.max_mass_image.empty()) {
+    set_constant_max_mass(s.texels, tex.max_mass_kg_m2);
+  } else {
+    try {
+      set_max_mass_from_image(s.texels, tex.max_mass_image, tex.max_mass_image_scale_kg_m2);
+    } catch (const std::runtime_error& e) {
+      throw SceneError(key + ".max_mass_image: " + e.what());
+    }
+  }
+  // Texel masses are 64-bit counts of a unit tied to the particle mass
+  // (surface/texel_mass_units.h); say so when a texel's cap exceeds them.
+  const double particle_mass = scene.simulation.liquid.rest_density_kg_m3 * std::pow(scene.simulation.particle_spacing_m, 3);
+  const double limit = max_texel_mass_kg(particle_mass);
+  for (float m : s.texels.max_mass)
+    if (m > limit)
+      throw SceneError(key + ": a texel may hold " + std::to_string(m) + " kg, more than the " + std::to_string(limit) +
+                       " kg a texel can count at this particle mass; lower the maximum mass or raise the resolution");
+  s.initial_mass_per_area = static_cast<float>(tex.initial_mass_kg_m2);
+  s.initial_temperature = static_cast<float>(rigid.temperature_k);
+  s.wetting_decay = static_cast<float>(tex.wetting_decay_s);
+  if (atlas_out) *atlas_out = std::move(atlas);
+  return s;
+}
+
+SimulationSetup make_simulation_setup(const Scene& scene) { return make_simulation_setup(scene, nullptr); }
+
+SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas>* atlases) {
   const SimulationSettings& s = scene.simulation;
   SimulationSetup setup;
   setup.domain_min = to_vec3(s.domain_min_m);
@@ -58,9 +100,18 @@ SimulationSetup make_simulation_setup(const Scene& scene) {
     setup.liquid_position.insert(setup.liquid_position.end(), points.begin(), points.end());
     setup.liquid_velocity.insert(setup.liquid_velocity.end(), points.size(), to_vec3(block.velocity_m_s));
   }
-  for (const RigidObject& rigid : s.rigids) {
+  for (std::size_t r = 0; r < s.rigids.size(); ++r) {
+    const RigidObject& rigid = s.rigids[r];
     TriangleMesh mesh = load_triangle_mesh(rigid.mesh);
     std::vector<Vec3> samples = sample_surface(mesh.positions, mesh.triangles, setup.particle_spacing);
+    if (rigid.texture) {
+      AtlasMesh atlas;
+      SurfaceTextureSetup surface = make_surface_texture(scene, r, mesh, atlases ? &atlas : nullptr);
+      surface.rigid_first = setup.rigid_position.size();
+      surface.rigid_count = samples.size();
+      setup.surfaces.push_back(std::move(surface));
+      if (atlases) atlases->push_back(RigidAtlas{rigid.name, std::move(atlas)});
+    }
     setup.rigid_position.insert(setup.rigid_position.end(), samples.begin(), samples.end());
     setup.rigid_temperature.insert(setup.rigid_temperature.end(), samples.size(), static_cast<float>(rigid.temperature_k));
     setup.rigid_held.insert(setup.rigid_held.end(), samples.size(), rigid.hold_temperature ? 1 : 0);

@@ -1,6 +1,7 @@
 // dewpoint-simulate as users run it: conventions, bad input, frames.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 
@@ -56,6 +57,8 @@ TEST_F(SimulateCli, HelpAndVersion) {
 }
 
 TEST_F(SimulateCli, WritesFramesAndManifest) {
+  // The tray carries surface textures (docs/file-formats.md, rigid surfaces).
+  doc_["simulation"]["rigids"][0]["texture"] = {{"resolution", {64, 32}}};
   fs::path scene = write_scene();
   auto r = simulate(scene.string() + " -o " + (work_ / "out").string() + " --quiet --threads 2");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -74,6 +77,15 @@ TEST_F(SimulateCli, WritesFramesAndManifest) {
   for (double y : p.find("y")->values) mean2 += y / 216;
   EXPECT_LT(mean2, mean0);
   EXPECT_TRUE(fs::exists(work_ / "out/frames/rigid_particles.ply"));
+  ASSERT_EQ(m.rigids.size(), 1u);
+  EXPECT_EQ(m.rigids[0].name, "tray");
+  EXPECT_EQ(m.rigids[0].mesh_file, "rigid_tray.ply");
+  EXPECT_EQ(m.rigids[0].texture_resolution, (std::array<int, 2>{64, 32}));
+  io::PlyData atlas = io::read_ply(work_ / "out/frames/rigid_tray.ply");
+  EXPECT_NE(atlas.find("s"), nullptr);
+  EXPECT_FALSE(atlas.faces.empty());
+  for (const auto& f : m.frames) EXPECT_TRUE(fs::exists(work_ / "out/frames" / f.surface_files.at("tray")));
+  EXPECT_EQ(m.frames[2].surface_files.at("tray"), "surface_tray.0002.exr");
 }
 
 TEST_F(SimulateCli, FrameRangeWritesOnlyThoseFrames) {
@@ -96,6 +108,13 @@ TEST_F(SimulateCli, UnknownKeyIsRejectedBeforeAnyOutput) {
   fs::path scene = write_scene();
   expect_rejected(simulate(scene.string() + " -o " + (work_ / "out").string()), work_ / "out",
                   {"shot.json", "simulation.liquid.colour", "unknown key"});
+}
+
+TEST_F(SimulateCli, ZeroTextureResolutionIsRejectedBeforeAnyOutput) {
+  doc_["simulation"]["rigids"][0]["texture"] = {{"resolution", {0, 0}}};
+  fs::path scene = write_scene();
+  expect_rejected(simulate(scene.string() + " -o " + (work_ / "out").string()), work_ / "out",
+                  {"shot.json", "simulation.rigids[0].texture.resolution", "found [0, 0]"});
 }
 
 TEST_F(SimulateCli, WrongTypeIsRejectedBeforeAnyOutput) {

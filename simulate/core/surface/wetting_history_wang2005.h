@@ -1,0 +1,61 @@
+#pragma once
+// The wetting history texture (paper Sec. 4.3, 6.2, after Wang, Mucha &
+// Turk 2005, "Water Drops on Surfaces"): 1 where a liquid particle touches a
+// texel, fading as exp(-elapsed / decay time) once the texel is dry. It
+// records the paths particles ran along (for rendering) and marks recently
+// wetted texels, which do not condense (Sec. 6.2). The paper does not say
+// when a particle touches a texel; here it is when the particle's centre
+// lies on the texel's front side within the contact radius (sqrt(2) times
+// the particle spacing: a particle resting at its equilibrium distance of
+// one spacing from an Akinci 2012 boundary then wets a disc of radius one
+// spacing, the wall area it covers in a packed layer).
+#include <cstdint>
+
+#include "backend/host_device.h"
+#include "sph/uniform_grid.h"
+
+namespace dp {
+
+// Per grid cell: 1 when any liquid particle lies in the 27 cells around it.
+// Most texels are far from the liquid; this lets each of them decide with
+// one load instead of walking nine rows of cells.
+struct MarkCellsNearLiquid {
+  GridView liquid;
+  std::uint8_t* near;
+
+  DP_HD void operator()(std::size_t c) const {
+    const UniformGrid& g = liquid.grid;
+    const int i = static_cast<int>(c % g.nx), j = static_cast<int>((c / g.nx) % g.ny), k = static_cast<int>(c / (static_cast<std::size_t>(g.nx) * g.ny));
+    const int i0 = i > 0 ? i - 1 : 0, i1 = i + 1 < g.nx ? i + 1 : g.nx - 1;
+    bool any = false;
+    for (int kk = k - 1; kk <= k + 1; ++kk)
+      for (int jj = j - 1; jj <= j + 1; ++jj)
+        if (kk >= 0 && kk < g.nz && jj >= 0 && jj < g.ny)
+          any = any || liquid.cell_begin[g.linear(i0, jj, kk)] < liquid.cell_end[g.linear(i1, jj, kk)];
+    near[c] = any ? 1 : 0;
+  }
+};
+
+struct RecordWetting {
+  GridView liquid;              // this step's liquid particles
+  const std::uint8_t* near;     // MarkCellsNearLiquid of the same step
+  const Vec3* texel_position;
+  const Vec3* texel_normal;
+  float contact_radius2;        // m^2
+  float dry_factor;             // exp(-dt / decay time)
+  float* wetting;
+
+  DP_HD void operator()(std::size_t t) const {
+    const Vec3 xt = texel_position[t], nt = texel_normal[t];
+    bool touched = false;
+    if (near[liquid.grid.key_of(xt)]) liquid.for_each_near(xt, [&](std::uint32_t i) {
+      const Vec3 d = liquid.position[i] - xt;
+      touched = touched || (length_squared(d) < contact_radius2 && dot(d, nt) >= 0.0f);
+    });
+    wetting[t] = touched ? 1.0f : wetting[t] * dry_factor;
+  }
+};
+
+inline constexpr float kWettingContactSpacings = 1.41421356f;
+
+}  // namespace dp
