@@ -170,11 +170,6 @@ double contact_angle(JsonObject& o, const std::string& key, double fallback) {
   return deg;
 }
 
-double non_negative(JsonObject& o, const std::string& key, double fallback) {
-  const double value = o.number(key, fallback);
-  if (!(value >= 0)) throw o.error(key, "expected a non-negative number, found " + std::to_string(value));
-  return value;
-}
 
 MeshSettings read_mesh(std::optional<JsonObject> o, const SimulationSettings& sim) {
   MeshSettings m;
@@ -184,8 +179,8 @@ MeshSettings read_mesh(std::optional<JsonObject> o, const SimulationSettings& si
   m.particle_radius_factor = positive(*o, "particle_radius_factor", o->number("particle_radius_factor", m.particle_radius_factor));
   m.correction = o->boolean("correction", m.correction);
   m.contact_angle_deg = contact_angle(*o, "contact_angle_deg", m.contact_angle_deg);
-  m.advancing_deg = non_negative(*o, "advancing_deg", m.advancing_deg);
-  m.receding_deg = non_negative(*o, "receding_deg", m.receding_deg);
+  m.advancing_deg = non_negative(*o, "advancing_deg", o->number("advancing_deg", m.advancing_deg));
+  m.receding_deg = non_negative(*o, "receding_deg", o->number("receding_deg", m.receding_deg));
   m.correction_reach_factor =
       positive(*o, "correction_reach_factor", o->number("correction_reach_factor", m.correction_reach_factor));
   if (o->has("rigids"))
