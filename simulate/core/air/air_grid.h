@@ -12,7 +12,11 @@
 // Vapor is stored in double: the flux-form transport conserves it to
 // rounding, and float rounding (1e-7 per cell update) would add up to more
 // than the 1e-9 drift the mass ledger is held to over thousands of steps;
-// double's 1e-16 keeps it far below. Velocity and temperature are float.
+// double's 1e-16 keeps it far below. Velocity and temperature are float;
+// temperature is kept as its excess over the ambient T_amb, which is what
+// buoyancy (Eq. 5) reads and which float then holds to 1e-7 of the excess
+// rather than to 1e-7 of 293 K (3e-5 K, enough to break a symmetric flow's
+// symmetry within a few dozen steps).
 #include <cmath>
 #include <cstdint>
 #include <utility>
@@ -71,14 +75,17 @@ struct AddCellSources {
 struct AirCellsView {
   MacGrid grid;
   const std::uint8_t* kind;
-  const double* vapor;        // kg/m^3
-  const float* temperature;   // K
+  const double* vapor;               // kg/m^3
+  const float* temperature_excess;   // T - T_amb, K
+  float ambient_temperature;         // K
   const float* u;
   const float* v;
   const float* w;
-  DP_HD Vec3 velocity_at(Vec3 p) const { return face_velocity(grid, u, v, w).at(p); }
-  DP_HD double vapor_at(Vec3 p) const { return cell_lattice(grid, vapor).sample(p); }
-  DP_HD float temperature_at(Vec3 p) const { return cell_lattice(grid, temperature).sample(p); }
+  DP_HD Vec3 velocity_at(Vec3 p) const { return face_velocity(grid, u, v, w).at(grid_point_of(grid, p)); }
+  DP_HD double vapor_at(Vec3 p) const { return cell_lattice(grid, vapor).sample(grid_point_of(grid, p)); }
+  DP_HD float temperature_at(Vec3 p) const {
+    return ambient_temperature + cell_lattice(grid, temperature_excess).sample(grid_point_of(grid, p));
+  }
 };
 
 template <class Exec>
@@ -100,10 +107,10 @@ class AirGrid {
       if (settings.open_face[f]) faces_.open_mask |= 1u << f;
     const float g = length(gravity);
     buoyancy_ = BuoyancyParameters{g > 0 ? (-1.0f / g) * gravity : Vec3{0, 1, 0}, settings.buoyancy_alpha,
-                                   settings.buoyancy_beta, settings.ambient_temperature};
+                                   settings.buoyancy_beta};
     const std::size_t n = grid_.cell_count();
     for (auto* b : {&kind_, &static_kind_, &inflow_of_, &unknown_}) b->resize(n);
-    for (auto* b : {&temperature_, &temperature_tmp_, &temperature_back_, &phi_, &rhs_, &omega_norm_}) b->resize(n);
+    for (auto* b : {&temperature_excess_, &temperature_tmp_, &temperature_back_, &phi_, &rhs_, &omega_norm_}) b->resize(n);
     vapor_.resize(n);
     vapor_tmp_.resize(n);
     for (auto* b : {&cell_velocity_, &omega_, &force_}) b->resize(n);
@@ -115,7 +122,7 @@ class AirGrid {
     }
     Exec::upload(inflows_, settings.inflows);
     exec.parallel_for(n, FillValue::Into<double>{settings.ambient_vapor, Exec::ptr(vapor_)});
-    exec.parallel_for(n, FillValue::Into<float>{settings.ambient_temperature, Exec::ptr(temperature_)});
+    exec.parallel_for(n, FillValue::Into<float>{0.0f, Exec::ptr(temperature_excess_)});
     exec.parallel_for(n, FillValue::Into<float>{0.0f, Exec::ptr(phi_)});
     exec.parallel_for(n, StaticCellKinds{grid_, rigid, Exec::ptr(static_kind_), Exec::ptr(inflow_of_), Exec::ptr(inflows_),
                                          static_cast<int>(settings.inflows.size())});
@@ -129,7 +136,7 @@ class AirGrid {
   const AirLedger& ledger() const { return ledger_; }
   CellKinds cells() const { return CellKinds{grid_, Exec::ptr(kind_), faces_}; }
   AirCellsView view() const {
-    return AirCellsView{grid_, Exec::ptr(kind_), Exec::ptr(vapor_), Exec::ptr(temperature_),
+    return AirCellsView{grid_, Exec::ptr(kind_), Exec::ptr(vapor_), Exec::ptr(temperature_excess_), settings_.ambient_temperature,
                         Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2])};
   }
 
@@ -163,8 +170,8 @@ class AirGrid {
     const std::size_t n = grid_.cell_count();
     ledger_.inflow_gain += exec.sum(n, InflowVaporGain{Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(vapor_),
                                                        static_cast<double>(grid_.cell_volume())});
-    exec.parallel_for(n, ApplyInflowScalars{Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(vapor_),
-                                            Exec::ptr(temperature_)});
+    exec.parallel_for(n, ApplyInflowScalars{Exec::ptr(inflow_of_), Exec::ptr(inflows_), settings_.ambient_temperature,
+                                            Exec::ptr(vapor_), Exec::ptr(temperature_excess_)});
   }
 
   void enforce_boundaries(const Exec& exec) {
@@ -175,7 +182,7 @@ class AirGrid {
   // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt.
   void add_forces(const Exec& exec, float dt) {
     for (int a = 0; a < 3; ++a)
-      exec.parallel_for(u_[a].size(), AddBuoyancy{grid_, a, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_), dt,
+      exec.parallel_for(u_[a].size(), AddBuoyancy{grid_, a, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt,
                                                   Exec::ptr(u_[a])});
     if (settings_.vorticity_epsilon > 0) {
       const std::size_t n = grid_.cell_count();
@@ -213,8 +220,8 @@ class AirGrid {
 
   void advect_temperature(const Exec& exec, float dt) {
     const FaceVelocity vel = face_velocity(grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]));
-    advect_field(exec, cell_lattice(grid_, Exec::ptr(temperature_)), vel, dt, temperature_tmp_, temperature_back_);
-    temperature_.swap(temperature_tmp_);
+    advect_field(exec, cell_lattice(grid_, Exec::ptr(temperature_excess_)), vel, dt, temperature_tmp_, temperature_back_);
+    temperature_excess_.swap(temperature_tmp_);
   }
 
   // Every component is advected by the velocity at the start of the call.
@@ -241,9 +248,9 @@ class AirGrid {
         vapor_.swap(vapor_tmp_);
       }
       if (settings_.heat_diffusivity > 0) {
-        exec.parallel_for(n, DiffuseExplicit<float>{cells(), Exec::ptr(temperature_), settings_.heat_diffusivity * h / dx2,
+        exec.parallel_for(n, DiffuseExplicit<float>{cells(), Exec::ptr(temperature_excess_), settings_.heat_diffusivity * h / dx2,
                                                     Exec::ptr(temperature_tmp_)});
-        temperature_.swap(temperature_tmp_);
+        temperature_excess_.swap(temperature_tmp_);
       }
     }
     return substeps;
@@ -269,7 +276,7 @@ class AirGrid {
     const std::size_t n = grid_.cell_count();
     if (vapor_mass) ledger_.exchanged += exec.sum(n, ValueAsDouble<double>{vapor_mass});
     exec.parallel_for(n, AddCellSources{vapor_mass, temperature_change, static_cast<double>(grid_.cell_volume()),
-                                        Exec::ptr(vapor_), Exec::ptr(temperature_)});
+                                        Exec::ptr(vapor_), Exec::ptr(temperature_excess_)});
   }
 
   double vapor_mass(const Exec& exec) const {
@@ -281,7 +288,8 @@ class AirGrid {
     s.grid = grid_;
     s.kind = Exec::download(kind_);
     s.vapor = Exec::download(vapor_);
-    s.temperature = Exec::download(temperature_);
+    s.temperature = Exec::download(temperature_excess_);
+    for (float& t : s.temperature) t += settings_.ambient_temperature;
     s.u = Exec::download(u_[0]);
     s.v = Exec::download(u_[1]);
     s.w = Exec::download(u_[2]);
@@ -296,7 +304,11 @@ class AirGrid {
     Exec::upload(u_[1], v);
     Exec::upload(u_[2], w);
   }
-  void set_temperature(const std::vector<float>& t) { Exec::upload(temperature_, t); }
+  void set_temperature(const std::vector<float>& t) {
+    std::vector<float> excess(t);
+    for (float& e : excess) e -= settings_.ambient_temperature;
+    Exec::upload(temperature_excess_, excess);
+  }
   void set_vapor(const Exec& exec, const std::vector<double>& rho) {
     Exec::upload(vapor_, rho);
     ledger_ = AirLedger{};
@@ -308,19 +320,16 @@ class AirGrid {
   template <class T>
   void advect_field(const Exec& exec, const Lattice<T>& source, const FaceVelocity& vel, float dt, Buffer<T>& out,
                     Buffer<T>& scratch) {
-    const std::size_t n = static_cast<std::size_t>(source.nx) * source.ny * source.nz;
-    if (settings_.advection == AirAdvection::SemiLagrangian) {
-      exec.parallel_for(n, AdvectSemiLagrangian<T>{source, vel, dt, Exec::ptr(out)});
-      return;
-    }
-    // forward into out, backward into scratch, corrected into out via scratch's partner
-    exec.parallel_for(n, AdvectSemiLagrangian<T>{source, vel, dt, Exec::ptr(out)});
+    const std::size_t n = source.size();
+    const float c = dt / grid_.dx;
+    exec.parallel_for(n, AdvectSemiLagrangian<T>{source, vel, c, Exec::ptr(out)});
+    if (settings_.advection == AirAdvection::SemiLagrangian) return;
+    // Forward step in `out`, backward step in `scratch`; the corrected value
+    // overwrites the backward one in place (each point reads only its own).
     Lattice<T> forward = source;
     forward.value = Exec::ptr(out);
-    exec.parallel_for(n, AdvectSemiLagrangian<T>{forward, vel, -dt, Exec::ptr(scratch)});
-    // The corrected value overwrites the backward estimate in place: each
-    // point reads only its own entry of it.
-    exec.parallel_for(n, MacCormackCorrect<T>{source, vel, dt, Exec::ptr(out), Exec::ptr(scratch), Exec::ptr(scratch)});
+    exec.parallel_for(n, AdvectSemiLagrangian<T>{forward, vel, -c, Exec::ptr(scratch)});
+    exec.parallel_for(n, MacCormackCorrect<T>{source, vel, c, Exec::ptr(out), Exec::ptr(scratch), Exec::ptr(scratch)});
     out.swap(scratch);
   }
 
@@ -331,7 +340,7 @@ class AirGrid {
   Buffer<AirInflow> inflows_;
   Buffer<std::uint8_t> kind_, static_kind_, inflow_of_, unknown_;
   Buffer<float> u_[3], u_tmp_[3], u_back_[3];
-  Buffer<float> temperature_, temperature_tmp_, temperature_back_, phi_, rhs_, omega_norm_;
+  Buffer<float> temperature_excess_, temperature_tmp_, temperature_back_, phi_, rhs_, omega_norm_;
   Buffer<double> vapor_, vapor_tmp_;
   Buffer<Vec3> cell_velocity_, omega_, force_;
   PoissonPcg<Exec> pcg_;

@@ -76,13 +76,14 @@ struct InflowVaporGain {
 struct ApplyInflowScalars {
   const std::uint8_t* inflow_of_cell;
   const AirInflow* inflows;
+  float ambient_temperature;
   double* vapor;
-  float* temperature;
+  float* temperature_excess;  // T - T_amb
   DP_HD void operator()(std::size_t c) const {
     const int n = inflow_of_cell[c];
     if (!n) return;
     vapor[c] = inflows[n - 1].vapor;
-    temperature[c] = inflows[n - 1].temperature;
+    temperature_excess[c] = inflows[n - 1].temperature - ambient_temperature;
   }
 };
 

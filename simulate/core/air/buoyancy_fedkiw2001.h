@@ -14,9 +14,9 @@ namespace dp {
 
 struct BuoyancyParameters {
   Vec3 up;  // unit, against gravity
-  float alpha, beta, ambient_temperature;
-  DP_HD float magnitude(double vapor, float temperature) const {
-    return -alpha * static_cast<float>(vapor) + beta * (temperature - ambient_temperature);
+  float alpha, beta;
+  DP_HD float magnitude(double vapor, float temperature_excess) const {
+    return -alpha * static_cast<float>(vapor) + beta * temperature_excess;
   }
 };
 
@@ -28,7 +28,7 @@ struct AddBuoyancy {
   int axis;
   BuoyancyParameters p;
   const double* vapor;
-  const float* temperature;
+  const float* temperature_excess;  // T - T_amb
   float dt;
   float* u;
 
@@ -41,7 +41,7 @@ struct AddBuoyancy {
     const int lo = a > 0 ? a - 1 : 0, hi = a < grid.n(axis) ? a : a - 1;
     const std::size_t cl = grid.cell(axis == 0 ? lo : i, axis == 1 ? lo : j, axis == 2 ? lo : k);
     const std::size_t ch = grid.cell(axis == 0 ? hi : i, axis == 1 ? hi : j, axis == 2 ? hi : k);
-    const float f_mean = 0.5f * (p.magnitude(vapor[cl], temperature[cl]) + p.magnitude(vapor[ch], temperature[ch]));
+    const float f_mean = 0.5f * (p.magnitude(vapor[cl], temperature_excess[cl]) + p.magnitude(vapor[ch], temperature_excess[ch]));
     u[f] += dt * up * f_mean;
   }
 };

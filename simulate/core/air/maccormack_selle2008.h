@@ -12,19 +12,15 @@ template <class T>
 struct MacCormackCorrect {
   Lattice<T> source;  // phi at the start of the step
   FaceVelocity velocity;
-  float dt;
+  float cells_per_speed;  // dt / dx
   const T* forward;   // phi^
   const T* backward;  // phi~
   T* out;
 
   DP_HD void operator()(std::size_t n) const {
-    const int i = static_cast<int>(n % source.nx);
-    const int j = static_cast<int>((n / source.nx) % source.ny);
-    const int k = static_cast<int>(n / (static_cast<std::size_t>(source.nx) * source.ny));
-    const Vec3 x = source.origin + source.dx * Vec3{static_cast<float>(i), static_cast<float>(j), static_cast<float>(k)};
     T lo, hi;
-    source.sample(trace_back(velocity, x, dt), &lo, &hi);
-    T v = forward[n] + static_cast<T>(0.5) * (source.value[n] - backward[n]);
+    source.sample(trace_back(velocity, source.point(n), cells_per_speed), &lo, &hi);
+    const T v = forward[n] + static_cast<T>(0.5) * (source.value[n] - backward[n]);
     out[n] = v < lo ? lo : (v > hi ? hi : v);
   }
 };

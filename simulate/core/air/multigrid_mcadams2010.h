@@ -164,6 +164,7 @@ class MultigridPreconditioner {
     Level& top = levels_[0];
     exec.parallel_for(r.size(), CopyFloats{Exec::ptr(r), Exec::ptr(top.b)});
     cycle(exec, 0);
+    z.resize(r.size());
     exec.parallel_for(r.size(), CopyFloats{Exec::ptr(top.x), Exec::ptr(z)});
   }
 

@@ -8,28 +8,25 @@
 
 namespace dp {
 
-// Where the fluid at p was dt ago (midpoint rule; dt < 0 traces forwards).
-DP_HD inline Vec3 trace_back(const FaceVelocity& velocity, Vec3 p, float dt) {
-  const Vec3 mid = p - (0.5f * dt) * velocity.at(p);
-  return p - dt * velocity.at(mid);
+// Where the fluid at p was a time ago; `cells_per_speed` = dt / dx, so that
+// velocity times it is a displacement in cells (negative: traces forwards).
+DP_HD inline GridPoint trace_back(const FaceVelocity& velocity, GridPoint p, float cells_per_speed) {
+  GridPoint mid = p;
+  mid.offset -= (0.5f * cells_per_speed) * velocity.at(p);
+  p.offset -= cells_per_speed * velocity.at(mid);
+  return p;
 }
 
-// out[i] = source(trace_back(x_i)) for every point x_i of source's lattice
+// out[n] = source(trace_back(x_n)) for every point x_n of source's lattice
 // (cell centres or the faces of one axis).
 template <class T>
 struct AdvectSemiLagrangian {
   Lattice<T> source;
   FaceVelocity velocity;
-  float dt;
+  float cells_per_speed;  // dt / dx
   T* out;
 
-  DP_HD void operator()(std::size_t n) const {
-    const int i = static_cast<int>(n % source.nx);
-    const int j = static_cast<int>((n / source.nx) % source.ny);
-    const int k = static_cast<int>(n / (static_cast<std::size_t>(source.nx) * source.ny));
-    const Vec3 x = source.origin + source.dx * Vec3{static_cast<float>(i), static_cast<float>(j), static_cast<float>(k)};
-    out[n] = source.sample(trace_back(velocity, x, dt));
-  }
+  DP_HD void operator()(std::size_t n) const { out[n] = source.sample(trace_back(velocity, source.point(n), cells_per_speed)); }
 };
 
 }  // namespace dp

@@ -1,6 +1,8 @@
 #pragma once
 // Air grids built in code for the air phase's tests.
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <random>
 #include <vector>
 
@@ -9,6 +11,17 @@
 #include "sph/particle_grid.h"
 
 namespace dp::test {
+
+// One thread: the suites run beside other builds on two cores, where two
+// OpenMP threads wait on each other's time slices at every kernel's barrier;
+// thread-count independence is tested on its own (air_determinism_test).
+inline CpuExec air_exec() { return CpuExec(1); }
+
+inline std::string sci(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.3e", v);
+  return s;
+}
 
 // A cube [0, L]^3 of n^3 cells, all faces closed, no forces or diffusion.
 inline AirSettings quiet_air_box(int n, float length = 1.0f) {

@@ -19,7 +19,7 @@ AirGrid<CpuExec> grid_with_obstacles(const CpuExec& exec, AirSettings s) {
 }
 
 double divergence_after_projection(AirSettings s, int* iterations) {
-  CpuExec exec(2);
+  CpuExec exec = test::air_exec();
   AirGrid<CpuExec> air = grid_with_obstacles(exec, s);
   AirSnapshot state = air.snapshot();
   test::randomise_velocity(state, 1.0f, 7);
@@ -37,7 +37,7 @@ double divergence_after_projection(AirSettings s, int* iterations) {
 TEST(air_Projection, RandomFieldInClosedBoxBecomesDivergenceFree) {
   int iterations = 0;
   const double d = divergence_after_projection(test::quiet_air_box(32), &iterations);
-  RecordProperty("relative_divergence", std::to_string(d));
+  RecordProperty("relative_divergence", test::sci(d));
   RecordProperty("iterations", iterations);
   EXPECT_LE(d, 1e-4);
   EXPECT_LT(iterations, 60);
@@ -49,7 +49,7 @@ TEST(air_Projection, RandomFieldWithOpenTopBecomesDivergenceFree) {
   s.open_face[static_cast<int>(AirFace::XMin)] = true;
   int iterations = 0;
   const double d = divergence_after_projection(s, &iterations);
-  RecordProperty("relative_divergence", std::to_string(d));
+  RecordProperty("relative_divergence", test::sci(d));
   EXPECT_LE(d, 1e-4);
   EXPECT_LT(iterations, 60);
 }
