@@ -74,12 +74,16 @@ void write_manifest(const std::filesystem::path& frames_dir, const FramesManifes
   j["particle_radius_m"] = m.particle_radius_m;
   j["rigid_particles"] = m.rigid_particles_file;
   j["frames"] = nlohmann::json::array();
-  for (const auto& f : m.frames)
-    j["frames"].push_back({{"index", f.index},
-                           {"time_s", f.time_s},
-                           {"step", f.step},
-                           {"liquid_particles", f.liquid_particles},
-                           {"files", {{"particles", f.particles_file}}}});
+  for (const auto& f : m.frames) {
+    nlohmann::json entry = {{"index", f.index},
+                            {"time_s", f.time_s},
+                            {"step", f.step},
+                            {"liquid_particles", f.liquid_particles},
+                            {"files", {{"particles", f.particles_file}}}};
+    if (!f.air_file.empty()) entry["files"]["air"] = f.air_file;
+    if (!f.air_vapor.is_null()) entry["air_vapor"] = f.air_vapor;
+    j["frames"].push_back(entry);
+  }
   write_atomically(frames_dir / kManifestName, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 
@@ -117,6 +121,8 @@ FramesManifest read_manifest(const std::filesystem::path& frames_dir) {
       e.step = need(f, "step", where).get<std::int64_t>();
       e.liquid_particles = need(f, "liquid_particles", where).get<std::size_t>();
       e.particles_file = need(need(f, "files", where), "particles", where + "files.").get<std::string>();
+      if (f["files"].contains("air")) e.air_file = f["files"]["air"].get<std::string>();
+      if (f.contains("air_vapor")) e.air_vapor = f["air_vapor"];
       m.frames.push_back(e);
     }
     m.extra = j;

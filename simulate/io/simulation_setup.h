@@ -9,6 +9,9 @@ namespace dp::io {
 // Loads the rigid meshes (throws naming the mesh file on failure).
 SimulationSetup make_simulation_setup(const Scene& scene);
 
+// The air section's core settings (vapor already a density, kelvin).
+AirSettings make_air_settings(const AirSectionSettings& air);
+
 // Particles on a cubic lattice of the given spacing, cell-centred in the block.
 std::vector<Vec3> fill_block(const LiquidBlock& block, double spacing);
 
