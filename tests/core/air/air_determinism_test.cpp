@@ -31,7 +31,7 @@ AirSnapshot run(int threads) {
                               s.domain_max, 0.02f);
   test::SortedParticles liquid(exec, {Vec3{0.5f, 0.05f, 0.5f}, Vec3{0.52f, 0.05f, 0.5f}}, s.domain_min, s.domain_max, 0.02f);
   AirGrid<CpuExec> air(exec, s, Vec3{0, -9.81f, 0}, rigid.view());
-  for (int n = 0; n < 15; ++n) {
+  for (int n = 0; n < 8; ++n) {
     air.classify(exec, liquid.view());
     air.step(exec, 0.01f);
   }
