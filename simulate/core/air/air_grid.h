@@ -118,6 +118,7 @@ class AirGrid {
       u_[a].resize(grid_.face_count(a));
       u_tmp_[a].resize(grid_.face_count(a));
       u_back_[a].resize(grid_.face_count(a));
+      vapor_flux_[a].resize(grid_.face_count(a));
       exec.parallel_for(u_[a].size(), FillValue::Into<float>{0.0f, Exec::ptr(u_[a])});
     }
     Exec::upload(inflows_, settings.inflows);
@@ -208,11 +209,16 @@ class AirGrid {
     const std::size_t n = grid_.cell_count();
     for (int s = 0; s < substeps; ++s) {
       const VaporFaceFlux flux{cells(), Exec::ptr(vapor_), settings_.ambient_vapor, h};
+      for (int a = 0; a < 3; ++a)
+        exec.parallel_for(u_[a].size(), ComputeVaporFlux{flux, a, Exec::ptr(u_[a]), Exec::ptr(vapor_flux_[a])});
+      const double* fx = Exec::ptr(vapor_flux_[0]);
+      const double* fy = Exec::ptr(vapor_flux_[1]);
+      const double* fz = Exec::ptr(vapor_flux_[2]);
       if (faces_.any_open()) {
-        ledger_.open_in += exec.sum(n, OpenFaceVaporMass{flux, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), true});
-        ledger_.open_out += exec.sum(n, OpenFaceVaporMass{flux, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), false});
+        ledger_.open_in += exec.sum(n, OpenFaceVaporMass{grid_, fx, fy, fz, true});
+        ledger_.open_out += exec.sum(n, OpenFaceVaporMass{grid_, fx, fy, fz, false});
       }
-      exec.parallel_for(n, TransportVapor{flux, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), Exec::ptr(vapor_tmp_)});
+      exec.parallel_for(n, TransportVapor{grid_, Exec::ptr(vapor_), fx, fy, fz, Exec::ptr(vapor_tmp_)});
       vapor_.swap(vapor_tmp_);
     }
     return substeps;
@@ -341,7 +347,7 @@ class AirGrid {
   Buffer<std::uint8_t> kind_, static_kind_, inflow_of_, unknown_;
   Buffer<float> u_[3], u_tmp_[3], u_back_[3];
   Buffer<float> temperature_excess_, temperature_tmp_, temperature_back_, phi_, rhs_, omega_norm_;
-  Buffer<double> vapor_, vapor_tmp_;
+  Buffer<double> vapor_, vapor_tmp_, vapor_flux_[3];
   Buffer<Vec3> cell_velocity_, omega_, force_;
   PoissonPcg<Exec> pcg_;
   AirLedger ledger_;

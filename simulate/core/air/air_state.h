@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "air/cell_kind.h"
 #include "air/mac_grid.h"
 #include "math/vec3.h"
 

@@ -134,6 +134,8 @@ class MultigridPreconditioner {
       l.nz = nz;
       const std::size_t n = static_cast<std::size_t>(nx) * ny * nz;
       l.unknown.resize(n);
+      l.stencil.resize(n);
+      l.diagonal.resize(n);
       l.x.resize(n);
       l.b.resize(n);
       l.tmp.resize(n);
@@ -153,9 +155,10 @@ class MultigridPreconditioner {
   // Level 0's unknowns are copied; coarser ones follow by coarsening.
   void set_unknowns(const Exec& exec, const Buffer<std::uint8_t>& fine_unknown) {
     levels_[0].unknown = fine_unknown;
-    for (std::size_t l = 1; l < levels_.size(); ++l) {
+    for (std::size_t l = 0; l < levels_.size(); ++l) {
       Level& c = levels_[l];
-      exec.parallel_for(c.unknown.size(), CoarsenUnknown{view(l - 1), c.nx, c.ny, c.nz, Exec::ptr(c.unknown)});
+      if (l > 0) exec.parallel_for(c.unknown.size(), CoarsenUnknown{view(l - 1), c.nx, c.ny, c.nz, Exec::ptr(c.unknown)});
+      exec.parallel_for(c.unknown.size(), BuildPoissonStencil{view(l), Exec::ptr(c.stencil), Exec::ptr(c.diagonal)});
     }
   }
 
@@ -170,13 +173,13 @@ class MultigridPreconditioner {
 
   PoissonLevel view(std::size_t l) const {
     const Level& v = levels_[l];
-    return PoissonLevel{v.nx, v.ny, v.nz, Exec::ptr(v.unknown), faces_};
+    return PoissonLevel{v.nx, v.ny, v.nz, Exec::ptr(v.unknown), faces_, Exec::ptr(v.stencil), Exec::ptr(v.diagonal)};
   }
 
  private:
   struct Level {
     int nx = 0, ny = 0, nz = 0;
-    Buffer<std::uint8_t> unknown;
+    Buffer<std::uint8_t> unknown, stencil, diagonal;
     Buffer<float> x, b, tmp;
   };
 

@@ -53,47 +53,56 @@ struct VaporFaceFlux {
   }
 };
 
+// Each face's flux, once (the two cells beside it read the same value).
+struct ComputeVaporFlux {
+  VaporFaceFlux flux;
+  int axis;
+  const float* u;
+  double* out;
+  DP_HD void operator()(std::size_t f) const { out[f] = flux(axis, u, f); }
+};
+
 // rho_c += sum of fluxes in - fluxes out, over its six faces (gather).
 struct TransportVapor {
-  VaporFaceFlux flux;
-  const float* u;
-  const float* v;
-  const float* w;
+  MacGrid grid;
+  const double* vapor;
+  const double* flux_x;
+  const double* flux_y;
+  const double* flux_z;
   double* out;
 
   DP_HD void operator()(std::size_t c) const {
-    const MacGrid& g = flux.cells.grid;
     int i, j, k;
-    g.cell_coords(c, i, j, k);
+    grid.cell_coords(c, i, j, k);
     double change = 0.0;
-    change += flux(0, u, g.face(0, i, j, k)) - flux(0, u, g.face(0, i + 1, j, k));
-    change += flux(1, v, g.face(1, i, j, k)) - flux(1, v, g.face(1, i, j + 1, k));
-    change += flux(2, w, g.face(2, i, j, k)) - flux(2, w, g.face(2, i, j, k + 1));
-    out[c] = flux.vapor[c] + change;
+    change += flux_x[grid.face(0, i, j, k)] - flux_x[grid.face(0, i + 1, j, k)];
+    change += flux_y[grid.face(1, i, j, k)] - flux_y[grid.face(1, i, j + 1, k)];
+    change += flux_z[grid.face(2, i, j, k)] - flux_z[grid.face(2, i, j, k + 1)];
+    out[c] = vapor[c] + change;
   }
 };
 
 // Vapor mass (kg) through the open domain faces of cell c in one sub-step,
 // `entering` or leaving, for the ledger.
 struct OpenFaceVaporMass {
-  VaporFaceFlux flux;
-  const float* u;
-  const float* v;
-  const float* w;
+  MacGrid grid;
+  const double* flux_x;
+  const double* flux_y;
+  const double* flux_z;
   bool entering;
 
   DP_HD double operator()(std::size_t c) const {
-    const MacGrid& g = flux.cells.grid;
+    const MacGrid& g = grid;
     int i, j, k;
     g.cell_coords(c, i, j, k);
     double m = 0.0;
     // Outward flux is +G on the max side, -G on the min side.
-    if (i == 0) m += side(-flux(0, u, g.face(0, 0, j, k)));
-    if (i == g.nx - 1) m += side(flux(0, u, g.face(0, g.nx, j, k)));
-    if (j == 0) m += side(-flux(1, v, g.face(1, i, 0, k)));
-    if (j == g.ny - 1) m += side(flux(1, v, g.face(1, i, g.ny, k)));
-    if (k == 0) m += side(-flux(2, w, g.face(2, i, j, 0)));
-    if (k == g.nz - 1) m += side(flux(2, w, g.face(2, i, j, g.nz)));
+    if (i == 0) m += side(-flux_x[g.face(0, 0, j, k)]);
+    if (i == g.nx - 1) m += side(flux_x[g.face(0, g.nx, j, k)]);
+    if (j == 0) m += side(-flux_y[g.face(1, i, 0, k)]);
+    if (j == g.ny - 1) m += side(flux_y[g.face(1, i, g.ny, k)]);
+    if (k == 0) m += side(-flux_z[g.face(2, i, j, 0)]);
+    if (k == g.nz - 1) m += side(flux_z[g.face(2, i, j, g.nz)]);
     return m * static_cast<double>(g.cell_volume());
   }
   DP_HD double side(double outward) const { return entering ? (outward < 0 ? -outward : 0.0) : (outward > 0 ? outward : 0.0); }
