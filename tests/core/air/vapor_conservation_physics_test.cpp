@@ -44,6 +44,7 @@ TEST(air_VaporMass, ClosedBoxRandomFlowDriftsBelow1e9Over1000Steps) {
   air.set_vapor(exec, vapor_blob(state.grid, Vec3{0.2f, 0.17f, 0.25f}, 0.08f, 0.01, s.ambient_vapor));
   air.project(exec);
   const double m0 = air.vapor_mass(exec);
+  const std::vector<double> start = air.snapshot().vapor;
   int substeps = 0;
   for (int step = 0; step < 1000; ++step) substeps = std::max(substeps, air.step(exec, 0.01f).advection_substeps);
   const double drift = std::fabs(air.vapor_mass(exec) - m0) / m0;
@@ -51,6 +52,10 @@ TEST(air_VaporMass, ClosedBoxRandomFlowDriftsBelow1e9Over1000Steps) {
   EXPECT_LE(drift, 1e-9);
   const AirSnapshot end = air.snapshot();
   EXPECT_GE(*std::min_element(end.vapor.begin(), end.vapor.end()), 0.0) << "transport must keep vapor non-negative";
+  // The blob must actually have been moved and mixed for the test to bite.
+  double moved = 0;
+  for (std::size_t c = 0; c < start.size(); ++c) moved += std::fabs(end.vapor[c] - start[c]);
+  EXPECT_GT(moved * end.grid.cell_volume(), 0.1 * (m0 - s.ambient_vapor * end.grid.cell_count() * end.grid.cell_volume()));
   EXPECT_GT(substeps, 0);
 }
 
