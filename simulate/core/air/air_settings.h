@@ -29,7 +29,7 @@ enum class AirFace { XMin, XMax, YMin, YMax, ZMin, ZMax };
 struct AirSettings {
   Vec3 domain_min, domain_max;  // covered by whole cubic cells; see air_grid_layout()
   int resolution = 64;          // cells along the longest axis of the domain
-  float ambient_temperature = 293.15f;  // K: T_amb of Eq. 5, initial air and what open faces let in
+  float ambient_temperature = 293.15f;  // K: T_amb of Eq. 5 and the initial air
   double ambient_vapor = 0;             // kg/m^3: initial vapor and what open faces let in
   // Eq. 5: f = alpha rho_v (-up) + beta (T - T_amb) up; see buoyancy_fedkiw2001.h.
   float buoyancy_alpha = -3.09f;   // m^4/(kg s^2); < 0: humid air rises
