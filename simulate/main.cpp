@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "air_vdb.h"
 #include "cli_common.h"
 #include "dewpoint/version.h"
 #include "frames.h"
@@ -89,6 +90,13 @@ int run(const Options& opt) {
       dp::io::write_surface_frame(frames_dir / file, surfaces[r]);
       entry.surface_files[atlases[r].rigid_name] = file;
     }
+    if (std::optional<dp::AirSnapshot> air = simulation->air()) {
+      entry.air_file = dp::io::frame_file_name("air", frame, "vdb");
+      dp::io::write_air_frame(frames_dir / entry.air_file, *air, comment);
+      const dp::AirLedger& l = air->ledger;
+      entry.air_vapor = {{"mass_kg", air->vapor_mass()}, {"initial_kg", l.initial}, {"inflow_gain_kg", l.inflow_gain},
+                         {"open_in_kg", l.open_in}, {"open_out_kg", l.open_out}, {"exchanged_kg", l.exchanged}};
+    }
     manifest.frames.push_back(entry);
     dp::io::write_manifest(frames_dir, manifest);
     const dp::StepReport& last = simulation->last_step();
@@ -96,7 +104,14 @@ int run(const Options& opt) {
     std::snprintf(detail, sizeof detail, "t=%.4f s  step %lld  dt=%.2e s  PCISPH %d it, density error %.3f %%",
                   entry.time_s, static_cast<long long>(entry.step), last.dt, last.pressure_iterations,
                   100.0 * last.density_error);
-    progress.update(frame + 1, detail);
+    std::string line = detail;
+    if (setup.air) {
+      char air[96];
+      std::snprintf(air, sizeof air, "  air CG %d it, residual %.1e", last.air.projection_iterations,
+                    static_cast<double>(last.air.projection_residual));
+      line += air;
+    }
+    progress.update(frame + 1, line);
   }
   progress.finish(std::to_string(manifest.frames.size()) + " frames in " + frames_dir.string());
   return 0;

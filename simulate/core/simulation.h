@@ -3,10 +3,13 @@
 // a step, and snapshots of the state. Backends are hidden behind it.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "air/air_settings.h"
+#include "air/air_state.h"
 #include "backend/device.h"
 #include "math/vec3.h"
 #include "surface/surface_texture_setup.h"
@@ -65,6 +68,7 @@ struct SimulationSetup {
   std::vector<std::uint8_t> rigid_held;   // 1: held at its temperature (a heated plate)
   std::vector<float> rigid_adhesion;      // beta of Akinci et al. 2013 per rigid particle; empty: none
   std::vector<SurfaceTextureSetup> surfaces;  // textured rigids' static textures (paper Sec. 4.3)
+  std::optional<AirSettings> air;         // the air phase (paper Sec. 4.2); none: particles only
 
   float support_radius() const { return 2.0f * particle_spacing; }
   float particle_mass() const {
@@ -78,6 +82,8 @@ struct StepReport {
   int pressure_iterations = 0;
   float density_error = 0;      // average (rho* - rho0)/rho0 after the last iteration
   double seconds_neighbours = 0, seconds_pressure = 0, seconds_heat = 0, seconds_other = 0;  // wall clock
+  double seconds_grid = 0;      // the air phase (Alg. 1 lines 7-11), wall clock
+  AirStepReport air;            // projection iterations and residual, sub-steps
 };
 
 // The state of the liquid particles, in the core's current order; `id` is
@@ -116,7 +122,13 @@ class Simulation {
   virtual double time() const = 0;  // s
   virtual std::string backend_name() const = 0;
   virtual const StepReport& last_step() const = 0;
+  // The air grid's state; none when the setup has no air phase.
+  virtual std::optional<AirSnapshot> air() const = 0;
 };
+
+// Throws std::invalid_argument naming the problem when the air grid's cells
+// are not larger than two support radii (paper Sec. 4.2).
+void check_air_cell_size(const SimulationSetup& setup);
 
 // Throws std::runtime_error naming the reason when the device is unusable.
 std::unique_ptr<Simulation> make_simulation(const ExecutionConfig& exec, const SimulationSetup& setup);

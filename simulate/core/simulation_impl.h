@@ -6,6 +6,7 @@
 #include <sstream>
 #include <utility>
 
+#include "air/air_grid.h"
 #include "simulation.h"
 #include "sph/adaptivity_winchenbach2017_driver.h"
 #include "sph/boundary_akinci2012.h"
@@ -102,6 +103,7 @@ class SimulationImpl final : public Simulation {
     surfaces_.prepare(exec_, setup, rigid_grid_.view(rigid_position_), rigid_grid_.order, rigid_volume_, rigid_temperature_);
     area_calibration_ = flat_face_area_calibration(kernel_, setup.particle_spacing);
     heat_dt_limit_ = heat_time_step_limit_of(setup);
+    if (setup.air) air_.emplace(exec_, *setup.air, setup.gravity, rigid_grid_.view(rigid_position_));
   }
 
   StepReport step() override { return step_with(next_time_step()); }
@@ -138,6 +140,10 @@ class SimulationImpl final : public Simulation {
   double time() const override { return time_; }
   std::string backend_name() const override { return Exec::name(); }
   const StepReport& last_step() const override { return report_; }
+  std::optional<AirSnapshot> air() const override {
+    if (!air_) return std::nullopt;
+    return air_->snapshot();
+  }
 
  private:
   static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -307,8 +313,20 @@ class SimulationImpl final : public Simulation {
     check_stability();
     exec_.synchronize();
     report.seconds_other = other + seconds_since(t3);
+    step_air(dt, report);  // Alg. 1 Phase 2
     report_ = report;
     return report;
+  }
+
+  // Alg. 1 lines 7-11: cells classified from the particles as they stand
+  // after the particle phase, then the air step.
+  void step_air(float dt, StepReport& report) {
+    if (!air_) return;
+    const auto t = Clock::now();
+    air_->classify(exec_, liquid_grid_.view(liquid_.position));
+    report.air = air_->step(exec_, dt);
+    exec_.synchronize();
+    report.seconds_grid = seconds_since(t);
   }
 
   // PCISPH: predict, correct pressures until the average density error is
@@ -428,6 +446,7 @@ class SimulationImpl final : public Simulation {
   float last_max_acceleration_ = 0;
   StepReport report_;
   SurfaceTextures<Exec> surfaces_;
+  std::optional<AirGrid<Exec>> air_;
 };
 
 }  // namespace dp

@@ -78,13 +78,15 @@ void write_manifest(const std::filesystem::path& frames_dir, const FramesManifes
     j["rigids"].push_back({{"name", r.name}, {"mesh", r.mesh_file}, {"texture_resolution", r.texture_resolution}});
   j["frames"] = nlohmann::json::array();
   for (const auto& f : m.frames) {
-    nlohmann::json files = {{"particles", f.particles_file}};
-    if (!f.surface_files.empty()) files["surfaces"] = f.surface_files;
-    j["frames"].push_back({{"index", f.index},
-                           {"time_s", f.time_s},
-                           {"step", f.step},
-                           {"liquid_particles", f.liquid_particles},
-                           {"files", files}});
+    nlohmann::json entry = {{"index", f.index},
+                            {"time_s", f.time_s},
+                            {"step", f.step},
+                            {"liquid_particles", f.liquid_particles},
+                            {"files", {{"particles", f.particles_file}}}};
+    if (!f.surface_files.empty()) entry["files"]["surfaces"] = f.surface_files;
+    if (!f.air_file.empty()) entry["files"]["air"] = f.air_file;
+    if (!f.air_vapor.is_null()) entry["air_vapor"] = f.air_vapor;
+    j["frames"].push_back(entry);
   }
   write_atomically(frames_dir / kManifestName, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
@@ -141,6 +143,8 @@ FramesManifest read_manifest(const std::filesystem::path& frames_dir) {
       if (f["files"].contains("surfaces"))
         for (const auto& [rigid, name] : f["files"]["surfaces"].items())
           e.surface_files[rigid] = file_name(name, where + "files.surfaces." + rigid);
+      if (f["files"].contains("air")) e.air_file = file_name(f["files"]["air"], where + "files.air");
+      if (f.contains("air_vapor")) e.air_vapor = f["air_vapor"];
       m.frames.push_back(e);
     }
     m.extra = j;

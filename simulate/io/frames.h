@@ -28,6 +28,8 @@ struct FrameEntry {
   std::int64_t step = 0;
   std::size_t liquid_particles = 0;
   std::string particles_file;  // relative to the frames folder
+  std::string air_file{};      // air.%04d.vdb; empty: no air phase
+  nlohmann::json air_vapor{};  // the air's vapor ledger (kg); null: no air phase
   std::map<std::string, std::string> surface_files;  // rigid name -> surface_NAME.%04d.exr
 };
 

@@ -1,7 +1,11 @@
 #include "scene.h"
 
 #include <cctype>
+#include <cmath>
 #include <fstream>
+
+#include "air/vapor_pressure.h"
+#include "simulation.h"
 
 namespace dp::io {
 
@@ -81,6 +85,104 @@ LiquidSettings read_liquid(JsonObject o) {
   return l;
 }
 
+// A vapor density given either as relative_humidity (of saturation at
+// `kelvin`, Eq. 10-11) or as vapor_kg_m3; not both.
+double read_vapor(JsonObject& o, double kelvin, double fallback) {
+  const bool rh = o.has("relative_humidity"), density = o.has("vapor_kg_m3");
+  if (rh && density) throw o.error("vapor_kg_m3", "give relative_humidity or vapor_kg_m3, not both");
+  if (density) {
+    const double v = o.number("vapor_kg_m3");
+    if (v < 0) throw o.error("vapor_kg_m3", "expected a non-negative number, found " + std::to_string(v));
+    return v;
+  }
+  if (!rh) return fallback;
+  const double r = o.number("relative_humidity");
+  if (!(r >= 0 && r <= 1)) throw o.error("relative_humidity", "expected a number in [0, 1], found " + std::to_string(r));
+  return vapor_density_at_humidity(r, kelvin);
+}
+
+AirInflowSettings read_air_inflow(JsonObject o, const AirSectionSettings& air) {
+  AirInflowSettings in;
+  const std::string shape = o.string("shape");
+  if (shape == "box") {
+    in.min_m = o.vec3("min_m");
+    in.max_m = o.vec3("max_m");
+    for (int a = 0; a < 3; ++a)
+      if (!(in.min_m[a] < in.max_m[a])) throw o.error("max_m", "every component must exceed min_m's");
+  } else if (shape == "disc") {
+    in.disc = true;
+    in.center_m = o.vec3("center_m");
+    in.normal = o.vec3("normal");
+    const double n = std::sqrt(in.normal[0] * in.normal[0] + in.normal[1] * in.normal[1] + in.normal[2] * in.normal[2]);
+    if (!(n > 0)) throw o.error("normal", "expected a non-zero vector");
+    for (double& c : in.normal) c /= n;
+    in.radius_m = positive(o, "radius_m", o.number("radius_m"));
+    in.thickness_m = o.number("thickness_m", 0);
+    if (in.thickness_m < 0) throw o.error("thickness_m", "expected a non-negative number");
+  } else {
+    throw o.error("shape", "expected \"box\" or \"disc\", found \"" + shape + "\"");
+  }
+  in.velocity_m_s = o.vec3("velocity_m_s", in.velocity_m_s);
+  in.temperature_k = kelvin_from_celsius(o, "temperature_c", o.number("temperature_c", air.temperature_k - kZeroCelsiusInKelvin));
+  in.vapor_kg_m3 = read_vapor(o, in.temperature_k, air.vapor_kg_m3);
+  o.finish();
+  return in;
+}
+
+AirSectionSettings read_air(JsonObject o, const SimulationSettings& sim) {
+  AirSectionSettings a;
+  a.resolution = static_cast<int>(o.integer("resolution", a.resolution));
+  if (a.resolution < 4) throw o.error("resolution", "expected an integer of at least 4, found " + std::to_string(a.resolution));
+  a.domain_min_m = sim.domain_min_m;
+  a.domain_max_m = sim.domain_max_m;
+  if (auto d = o.optional_object("domain")) {
+    a.domain_min_m = d->vec3("min_m");
+    a.domain_max_m = d->vec3("max_m");
+    for (int i = 0; i < 3; ++i)
+      if (!(a.domain_min_m[i] < a.domain_max_m[i])) throw d->error("max_m", "every component must exceed min_m's");
+    d->finish();
+  }
+  a.temperature_k = kelvin_from_celsius(o, "temperature_c", o.number("temperature_c", 20));
+  a.vapor_kg_m3 = read_vapor(o, a.temperature_k, vapor_density_at_humidity(0.5, a.temperature_k));
+  a.buoyancy_alpha = o.number("buoyancy_alpha", a.buoyancy_alpha);
+  a.buoyancy_beta = o.number("buoyancy_beta", a.buoyancy_beta);
+  a.vorticity_epsilon = o.number("vorticity_epsilon", a.vorticity_epsilon);
+  if (a.vorticity_epsilon < 0) throw o.error("vorticity_epsilon", "expected a non-negative number");
+  a.vapor_diffusivity_m2_s = o.number("vapor_diffusivity_m2_s", a.vapor_diffusivity_m2_s);
+  if (a.vapor_diffusivity_m2_s < 0) throw o.error("vapor_diffusivity_m2_s", "expected a non-negative number");
+  a.heat_diffusivity_m2_s = o.number("heat_diffusivity_m2_s", a.heat_diffusivity_m2_s);
+  if (a.heat_diffusivity_m2_s < 0) throw o.error("heat_diffusivity_m2_s", "expected a non-negative number");
+  const std::string advection = o.string("advection", "semi_lagrangian");
+  if (advection != "semi_lagrangian" && advection != "maccormack")
+    throw o.error("advection", "expected \"semi_lagrangian\" or \"maccormack\", found \"" + advection + "\"");
+  a.maccormack = advection == "maccormack";
+  if (auto b = o.optional_object("boundary")) {
+    const char* names[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+    for (int f = 0; f < 6; ++f) {
+      const std::string v = b->string(names[f], "closed");
+      if (v != "closed" && v != "open") throw b->error(names[f], "expected \"closed\" or \"open\", found \"" + v + "\"");
+      a.open_face[f] = v == "open";
+    }
+    b->finish();
+  }
+  if (o.has("inflows"))
+    for (JsonObject in : o.objects("inflows")) a.inflows.push_back(read_air_inflow(in, a));
+  if (a.inflows.size() > 255) throw o.error("inflows", "at most 255 inflows");
+  bool any_open = false, blowing = false;
+  for (bool f : a.open_face) any_open = any_open || f;
+  for (const auto& in : a.inflows) blowing = blowing || in.velocity_m_s != Vec3d{0, 0, 0};
+  if (blowing && !any_open)
+    throw o.error("inflows", "blow air into a closed domain; open at least one face in simulation.air.boundary");
+  if (auto p = o.optional_object("projection")) {
+    a.projection_tolerance = positive(*p, "tolerance", p->number("tolerance", a.projection_tolerance));
+    a.projection_max_iterations = static_cast<int>(p->integer("max_iterations", a.projection_max_iterations));
+    if (a.projection_max_iterations < 1) throw p->error("max_iterations", "expected a positive integer");
+    p->finish();
+  }
+  o.finish();
+  return a;
+}
+
 SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& scene_dir) {
   SimulationSettings s;
   JsonObject domain = o.object("domain");
@@ -157,6 +259,23 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
     s.rigid_material.specific_heat_j_kgk =
         positive(*m, "specific_heat_j_kgk", m->number("specific_heat_j_kgk", s.rigid_material.specific_heat_j_kgk));
     m->finish();
+  }
+  if (auto air = o.optional_object("air")) {
+    s.air = read_air(*air, s);
+    // The core's check, reported against the scene's key.
+    SimulationSetup probe;
+    probe.particle_spacing = static_cast<float>(s.particle_spacing_m);
+    probe.air = AirSettings{};
+    probe.air->domain_min = Vec3{static_cast<float>(s.air->domain_min_m[0]), static_cast<float>(s.air->domain_min_m[1]),
+                                 static_cast<float>(s.air->domain_min_m[2])};
+    probe.air->domain_max = Vec3{static_cast<float>(s.air->domain_max_m[0]), static_cast<float>(s.air->domain_max_m[1]),
+                                 static_cast<float>(s.air->domain_max_m[2])};
+    probe.air->resolution = s.air->resolution;
+    try {
+      check_air_cell_size(probe);
+    } catch (const std::invalid_argument& e) {
+      throw air->error("resolution", e.what());
+    }
   }
   o.finish();
   return s;

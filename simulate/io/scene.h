@@ -67,6 +67,34 @@ struct PressureSolverSettings {
   int max_iterations = 100;
 };
 
+// simulation.air (paper Sec. 4.2); see docs/scene-format.md.
+struct AirInflowSettings {
+  bool disc = false;
+  Vec3d min_m{0, 0, 0}, max_m{0, 0, 0};             // box
+  Vec3d center_m{0, 0, 0}, normal{0, 1, 0};         // disc
+  double radius_m = 0, thickness_m = 0;             // disc; thickness 0: one air cell
+  Vec3d velocity_m_s{0, 0, 0};
+  double temperature_k = 293.15;
+  double vapor_kg_m3 = 0;
+};
+
+struct AirSectionSettings {
+  int resolution = 64;
+  Vec3d domain_min_m, domain_max_m;  // default: the simulation domain
+  double temperature_k = 293.15;
+  double vapor_kg_m3 = 0;
+  double buoyancy_alpha = -3.09;
+  double buoyancy_beta = 0.0335;
+  double vorticity_epsilon = 0;
+  double vapor_diffusivity_m2_s = 2.5e-5;
+  double heat_diffusivity_m2_s = 2.2e-5;
+  bool maccormack = false;
+  std::array<bool, 6> open_face{};  // x_min, x_max, y_min, y_max, z_min, z_max
+  std::vector<AirInflowSettings> inflows;
+  double projection_tolerance = 1e-5;
+  int projection_max_iterations = 200;
+};
+
 struct SimulationSettings {
   Vec3d domain_min_m, domain_max_m;
   Vec3d gravity_m_s2{0, -9.81, 0};
@@ -82,6 +110,7 @@ struct SimulationSettings {
   std::vector<LiquidBlock> liquid_blocks;
   std::vector<RigidObject> rigids;
   RigidMaterialSettings rigid_material;
+  std::optional<AirSectionSettings> air;
 };
 
 struct MeshSettings {

@@ -31,6 +31,41 @@ std::vector<Vec3> fill_block(const LiquidBlock& block, double spacing) {
   return points;
 }
 
+AirSettings make_air_settings(const AirSectionSettings& a) {
+  AirSettings air;
+  air.domain_min = to_vec3(a.domain_min_m);
+  air.domain_max = to_vec3(a.domain_max_m);
+  air.resolution = a.resolution;
+  air.ambient_temperature = static_cast<float>(a.temperature_k);
+  air.ambient_vapor = a.vapor_kg_m3;
+  air.buoyancy_alpha = static_cast<float>(a.buoyancy_alpha);
+  air.buoyancy_beta = static_cast<float>(a.buoyancy_beta);
+  air.vorticity_epsilon = static_cast<float>(a.vorticity_epsilon);
+  air.vapor_diffusivity = static_cast<float>(a.vapor_diffusivity_m2_s);
+  air.heat_diffusivity = static_cast<float>(a.heat_diffusivity_m2_s);
+  air.advection = a.maccormack ? AirAdvection::MacCormack : AirAdvection::SemiLagrangian;
+  air.open_face = a.open_face;
+  air.projection_tolerance = static_cast<float>(a.projection_tolerance);
+  air.projection_max_iterations = a.projection_max_iterations;
+  const float dx = mac_grid_covering(air.domain_min, air.domain_max, air.resolution).dx;
+  for (const AirInflowSettings& in : a.inflows) {
+    AirInflow f;
+    f.shape = in.disc ? AirInflow::Shape::Disc : AirInflow::Shape::Box;
+    f.box_min = to_vec3(in.min_m);
+    f.box_max = to_vec3(in.max_m);
+    f.center = to_vec3(in.center_m);
+    f.normal = to_vec3(in.normal);
+    f.radius = static_cast<float>(in.radius_m);
+    // A disc without thickness is one cell thick, so it catches cell centres.
+    f.thickness = in.thickness_m > 0 ? static_cast<float>(in.thickness_m) : dx;
+    f.velocity = to_vec3(in.velocity_m_s);
+    f.temperature = static_cast<float>(in.temperature_k);
+    f.vapor = in.vapor_kg_m3;
+    air.inflows.push_back(f);
+  }
+  return air;
+}
+
 SurfaceTextureSetup make_surface_texture(const Scene& scene, std::size_t rigid_index, const TriangleMesh& mesh,
                                          AtlasMesh* atlas_out) {
   const RigidObject& rigid = scene.simulation.rigids[rigid_index];
@@ -95,6 +130,7 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   setup.rigid.specific_heat = static_cast<float>(s.rigid_material.specific_heat_j_kgk);
   setup.liquid.boundary_friction = static_cast<float>(s.liquid.boundary_friction);
   setup.liquid.temperature = static_cast<float>(s.liquid.temperature_k);
+  if (s.air) setup.air = make_air_settings(*s.air);
   for (const LiquidBlock& block : s.liquid_blocks) {
     std::vector<Vec3> points = fill_block(block, s.particle_spacing_m);
     setup.liquid_position.insert(setup.liquid_position.end(), points.begin(), points.end());

@@ -24,6 +24,8 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
 // The static textures of one rigid (paper Sec. 4.3): atlas, texels, m_t^max.
 // Throws SceneError naming the scene key when the texture cannot be made.
 SurfaceTextureSetup make_surface_texture(const Scene& scene, std::size_t rigid, const TriangleMesh& mesh, AtlasMesh* atlas);
+// The air section's core settings (vapor already a density, kelvin).
+AirSettings make_air_settings(const AirSectionSettings& air);
 
 // Particles on a cubic lattice of the given spacing, cell-centred in the block.
 std::vector<Vec3> fill_block(const LiquidBlock& block, double spacing);

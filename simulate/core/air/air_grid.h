@@ -1,0 +1,356 @@
+#pragma once
+// The air phase (paper Sec. 4.2, Alg. 1 lines 7-11) on either backend: a
+// staggered grid with velocity, temperature and vapor density, its liquid and
+// rigid particles as boundaries. One step:
+//   line 7   classify(): air, solid (rigid), liquid, inflow cells
+//   line 8   inflow values, boundary conditions, buoyancy (Eq. 5) and
+//            vorticity confinement
+//   line 9   advection: vapor conservatively, temperature and velocity
+//            semi-Lagrangian (optionally MacCormack)
+//   line 10  diffusion of heat and vapor
+//   line 11  pressure projection, multigrid-preconditioned CG
+// Vapor is stored in double: the flux-form transport conserves it to
+// rounding, and float rounding (1e-7 per cell update) would add up to more
+// than the 1e-9 drift the mass ledger is held to over thousands of steps;
+// double's 1e-16 keeps it far below. Velocity and temperature are float;
+// temperature is kept as its excess over the ambient T_amb, which is what
+// buoyancy (Eq. 5) reads and which float then holds to 1e-7 of the excess
+// rather than to 1e-7 of 293 K (3e-5 K, enough to break a symmetric flow's
+// symmetry within a few dozen steps).
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "air/air_settings.h"
+#include "air/air_state.h"
+#include "air/boundary_conditions.h"
+#include "air/buoyancy_fedkiw2001.h"
+#include "air/classify_cells.h"
+#include "air/conjugate_gradient.h"
+#include "air/diffusion_explicit.h"
+#include "air/maccormack_selle2008.h"
+#include "air/pressure_projection.h"
+#include "air/semi_lagrangian_stam1999.h"
+#include "air/vapor_transport_fv.h"
+#include "air/vorticity_confinement_fedkiw2001.h"
+
+namespace dp {
+
+struct FillValue {
+  template <class T>
+  struct Into {
+    T value;
+    T* out;
+    DP_HD void operator()(std::size_t i) const { out[i] = value; }
+  };
+};
+
+struct AbsoluteValue {
+  const float* v;
+  DP_HD float operator()(std::size_t i) const { return fabsf(v[i]); }
+};
+
+template <class T>
+struct ValueAsDouble {
+  const T* v;
+  DP_HD double operator()(std::size_t i) const { return static_cast<double>(v[i]); }
+};
+
+// Vapor (kg) and temperature change (K) per cell from the coupling, added
+// where the cell carries air; each cell reads only its own entry.
+struct AddCellSources {
+  const double* vapor_mass;
+  const float* temperature_change;
+  double cell_volume;
+  double* vapor;
+  float* temperature;
+  DP_HD void operator()(std::size_t c) const {
+    if (vapor_mass) vapor[c] += vapor_mass[c] / cell_volume;
+    if (temperature_change) temperature[c] += temperature_change[c];
+  }
+};
+
+// What the coupling (paper Sec. 5-6) reads: device pointers to the cells.
+struct AirCellsView {
+  MacGrid grid;
+  const std::uint8_t* kind;
+  const double* vapor;               // kg/m^3
+  const float* temperature_excess;   // T - T_amb, K
+  float ambient_temperature;         // K
+  const float* u;
+  const float* v;
+  const float* w;
+  DP_HD Vec3 velocity_at(Vec3 p) const { return face_velocity(grid, u, v, w).at(grid_point_of(grid, p)); }
+  DP_HD double vapor_at(Vec3 p) const { return cell_lattice(grid, vapor).sample(grid_point_of(grid, p)); }
+  DP_HD float temperature_at(Vec3 p) const {
+    return ambient_temperature + cell_lattice(grid, temperature_excess).sample(grid_point_of(grid, p));
+  }
+};
+
+template <class Exec>
+class AirGrid {
+  template <class T>
+  using Buffer = typename Exec::template Buffer<T>;
+
+ public:
+  // Courant sum of one vapor transport sub-step (positivity, see
+  // vapor_transport_fv.h) and diffusion number of one diffusion sub-step.
+  static constexpr double kMaxVaporCourant = 0.3;
+  static constexpr double kMaxDiffusionNumber = 0.9;
+
+  // `rigid`: the static rigid particles in their neighbour grid (a view with
+  // no particles when there are none).
+  AirGrid(const Exec& exec, const AirSettings& settings, Vec3 gravity, const GridView& rigid)
+      : settings_(settings), grid_(mac_grid_covering(settings.domain_min, settings.domain_max, settings.resolution)) {
+    for (int f = 0; f < 6; ++f)
+      if (settings.open_face[f]) faces_.open_mask |= 1u << f;
+    const float g = length(gravity);
+    buoyancy_ = BuoyancyParameters{g > 0 ? (-1.0f / g) * gravity : Vec3{0, 1, 0}, settings.buoyancy_alpha,
+                                   settings.buoyancy_beta};
+    const std::size_t n = grid_.cell_count();
+    for (auto* b : {&kind_, &static_kind_, &inflow_of_, &unknown_}) b->resize(n);
+    for (auto* b : {&temperature_excess_, &temperature_tmp_, &temperature_back_, &phi_, &rhs_, &omega_norm_}) b->resize(n);
+    vapor_.resize(n);
+    vapor_tmp_.resize(n);
+    for (auto* b : {&cell_velocity_, &omega_, &force_}) b->resize(n);
+    for (int a = 0; a < 3; ++a) {
+      u_[a].resize(grid_.face_count(a));
+      u_tmp_[a].resize(grid_.face_count(a));
+      u_back_[a].resize(grid_.face_count(a));
+      vapor_flux_[a].resize(grid_.face_count(a));
+      exec.parallel_for(u_[a].size(), FillValue::Into<float>{0.0f, Exec::ptr(u_[a])});
+    }
+    Exec::upload(inflows_, settings.inflows);
+    exec.parallel_for(n, FillValue::Into<double>{settings.ambient_vapor, Exec::ptr(vapor_)});
+    exec.parallel_for(n, FillValue::Into<float>{0.0f, Exec::ptr(temperature_excess_)});
+    exec.parallel_for(n, FillValue::Into<float>{0.0f, Exec::ptr(phi_)});
+    exec.parallel_for(n, StaticCellKinds{grid_, rigid, Exec::ptr(static_kind_), Exec::ptr(inflow_of_), Exec::ptr(inflows_),
+                                         static_cast<int>(settings.inflows.size())});
+    kind_ = static_kind_;
+    pcg_.resize(grid_.nx, grid_.ny, grid_.nz, faces_);
+    ledger_.initial = vapor_mass(exec);
+  }
+
+  const MacGrid& grid() const { return grid_; }
+  const AirSettings& settings() const { return settings_; }
+  const AirLedger& ledger() const { return ledger_; }
+  CellKinds cells() const { return CellKinds{grid_, Exec::ptr(kind_), faces_}; }
+  AirCellsView view() const {
+    return AirCellsView{grid_, Exec::ptr(kind_), Exec::ptr(vapor_), Exec::ptr(temperature_excess_), settings_.ambient_temperature,
+                        Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2])};
+  }
+
+  // Alg. 1 line 7, from the liquid particles in their neighbour grid.
+  void classify(const Exec& exec, const GridView& liquid) {
+    exec.parallel_for(grid_.cell_count(), ClassifyCells{grid_, liquid, Exec::ptr(static_kind_), Exec::ptr(kind_)});
+  }
+
+  // Alg. 1 lines 8-11.
+  AirStepReport step(const Exec& exec, float dt) {
+    AirStepReport report;
+    apply_inflows(exec);
+    enforce_boundaries(exec);
+    // Scalars move with the last projected, divergence-free velocity, which
+    // neither piles vapor up nor thins it out.
+    report.advection_substeps = transport_vapor(exec, dt);
+    advect_temperature(exec, dt);
+    add_forces(exec, dt);
+    advect_velocity(exec, dt);
+    report.diffusion_substeps = diffuse(exec, dt);
+    const PcgResult p = project(exec);
+    report.projection_iterations = p.iterations;
+    report.projection_residual = p.relative_residual;
+    return report;
+  }
+
+  // Inflow cells take their prescribed temperature and vapor; the vapor
+  // this adds (or removes) goes to the ledger.
+  void apply_inflows(const Exec& exec) {
+    if (settings_.inflows.empty()) return;
+    const std::size_t n = grid_.cell_count();
+    ledger_.inflow_gain += exec.sum(n, InflowVaporGain{Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(vapor_),
+                                                       static_cast<double>(grid_.cell_volume())});
+    exec.parallel_for(n, ApplyInflowScalars{Exec::ptr(inflow_of_), Exec::ptr(inflows_), settings_.ambient_temperature,
+                                            Exec::ptr(vapor_), Exec::ptr(temperature_excess_)});
+  }
+
+  void enforce_boundaries(const Exec& exec) {
+    for (int a = 0; a < 3; ++a)
+      exec.parallel_for(u_[a].size(), EnforceFaceVelocity{cells(), a, Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[a])});
+  }
+
+  // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt.
+  void add_forces(const Exec& exec, float dt) {
+    for (int a = 0; a < 3; ++a)
+      exec.parallel_for(u_[a].size(), AddBuoyancy{grid_, a, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt,
+                                                  Exec::ptr(u_[a])});
+    if (settings_.vorticity_epsilon > 0) {
+      const std::size_t n = grid_.cell_count();
+      exec.parallel_for(n, CellCentredVelocity{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]),
+                                               Exec::ptr(cell_velocity_)});
+      exec.parallel_for(n, ComputeVorticity{cells(), Exec::ptr(cell_velocity_), Exec::ptr(omega_), Exec::ptr(omega_norm_)});
+      exec.parallel_for(n, ComputeConfinementForce{cells(), Exec::ptr(omega_), Exec::ptr(omega_norm_),
+                                                   settings_.vorticity_epsilon, Exec::ptr(force_)});
+      for (int a = 0; a < 3; ++a)
+        exec.parallel_for(u_[a].size(), AddCellForceToFaces{grid_, a, Exec::ptr(force_), dt, Exec::ptr(u_[a])});
+    }
+    enforce_boundaries(exec);
+  }
+
+  // Conservative vapor transport, sub-stepped so the Courant sum stays below
+  // kMaxVaporCourant; returns the number of sub-steps.
+  int transport_vapor(const Exec& exec, float dt) {
+    double courant = 0;
+    for (int a = 0; a < 3; ++a) courant += exec.max(u_[a].size(), AbsoluteValue{Exec::ptr(u_[a])}, 0.0f);
+    courant *= dt / grid_.dx;
+    const int substeps = courant > kMaxVaporCourant ? static_cast<int>(std::ceil(courant / kMaxVaporCourant)) : 1;
+    const float h = dt / static_cast<float>(substeps);
+    const std::size_t n = grid_.cell_count();
+    for (int s = 0; s < substeps; ++s) {
+      const VaporFaceFlux flux{cells(), Exec::ptr(vapor_), settings_.ambient_vapor, h};
+      for (int a = 0; a < 3; ++a)
+        exec.parallel_for(u_[a].size(), ComputeVaporFlux{flux, a, Exec::ptr(u_[a]), Exec::ptr(vapor_flux_[a])});
+      const double* fx = Exec::ptr(vapor_flux_[0]);
+      const double* fy = Exec::ptr(vapor_flux_[1]);
+      const double* fz = Exec::ptr(vapor_flux_[2]);
+      if (faces_.any_open()) {
+        ledger_.open_in += exec.sum(n, OpenFaceVaporMass{grid_, fx, fy, fz, true});
+        ledger_.open_out += exec.sum(n, OpenFaceVaporMass{grid_, fx, fy, fz, false});
+      }
+      exec.parallel_for(n, TransportVapor{grid_, Exec::ptr(vapor_), fx, fy, fz, Exec::ptr(vapor_tmp_)});
+      vapor_.swap(vapor_tmp_);
+    }
+    return substeps;
+  }
+
+  void advect_temperature(const Exec& exec, float dt) {
+    const FaceVelocity vel = face_velocity(grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]));
+    advect_field(exec, cell_lattice(grid_, Exec::ptr(temperature_excess_)), vel, dt, temperature_tmp_, temperature_back_);
+    temperature_excess_.swap(temperature_tmp_);
+  }
+
+  // Every component is advected by the velocity at the start of the call.
+  void advect_velocity(const Exec& exec, float dt) {
+    const FaceVelocity vel = face_velocity(grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]));
+    for (int a = 0; a < 3; ++a) advect_field(exec, vel.component(a), vel, dt, u_tmp_[a], u_back_[a]);
+    for (int a = 0; a < 3; ++a) u_[a].swap(u_tmp_[a]);
+    enforce_boundaries(exec);
+  }
+
+  // Explicit diffusion of heat and vapor; returns the sub-steps taken.
+  int diffuse(const Exec& exec, float dt) {
+    const double dx2 = static_cast<double>(grid_.dx) * grid_.dx;
+    const double d_max = std::fmax(settings_.vapor_diffusivity, settings_.heat_diffusivity);
+    const double number = 6.0 * d_max * dt / dx2;
+    if (!(d_max > 0)) return 0;
+    const int substeps = number > kMaxDiffusionNumber ? static_cast<int>(std::ceil(number / kMaxDiffusionNumber)) : 1;
+    const double h = static_cast<double>(dt) / substeps;
+    const std::size_t n = grid_.cell_count();
+    for (int s = 0; s < substeps; ++s) {
+      if (settings_.vapor_diffusivity > 0) {
+        exec.parallel_for(n, DiffuseExplicit<double>{cells(), Exec::ptr(vapor_), settings_.vapor_diffusivity * h / dx2,
+                                                     Exec::ptr(vapor_tmp_)});
+        vapor_.swap(vapor_tmp_);
+      }
+      if (settings_.heat_diffusivity > 0) {
+        exec.parallel_for(n, DiffuseExplicit<float>{cells(), Exec::ptr(temperature_excess_), settings_.heat_diffusivity * h / dx2,
+                                                    Exec::ptr(temperature_tmp_)});
+        temperature_excess_.swap(temperature_tmp_);
+      }
+    }
+    return substeps;
+  }
+
+  // Makes the velocity divergence-free in the air cells. The last step's
+  // phi is the first guess: the pressure changes little between steps.
+  PcgResult project(const Exec& exec) {
+    const std::size_t n = grid_.cell_count();
+    enforce_boundaries(exec);
+    exec.parallel_for(n, MarkAirUnknowns{Exec::ptr(kind_), Exec::ptr(unknown_)});
+    pcg_.set_unknowns(exec, unknown_);
+    exec.parallel_for(n, ComputeProjectionRhs{cells(), Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), Exec::ptr(rhs_)});
+    const PcgResult result = pcg_.solve(exec, rhs_, phi_, settings_.projection_tolerance, settings_.projection_max_iterations);
+    for (int a = 0; a < 3; ++a)
+      exec.parallel_for(u_[a].size(), SubtractPressureGradient{cells(), a, Exec::ptr(phi_), Exec::ptr(u_[a])});
+    return result;
+  }
+
+  // Coupling (paper Sec. 5-6): per-cell vapor mass (kg) and temperature
+  // change (K), either may be null; the vapor goes to the ledger.
+  void add_cell_sources(const Exec& exec, const double* vapor_mass, const float* temperature_change) {
+    const std::size_t n = grid_.cell_count();
+    if (vapor_mass) ledger_.exchanged += exec.sum(n, ValueAsDouble<double>{vapor_mass});
+    exec.parallel_for(n, AddCellSources{vapor_mass, temperature_change, static_cast<double>(grid_.cell_volume()),
+                                        Exec::ptr(vapor_), Exec::ptr(temperature_excess_)});
+  }
+
+  double vapor_mass(const Exec& exec) const {
+    return exec.sum(grid_.cell_count(), ValueAsDouble<double>{Exec::ptr(vapor_)}) * grid_.cell_volume();
+  }
+
+  AirSnapshot snapshot() const {
+    AirSnapshot s;
+    s.grid = grid_;
+    s.kind = Exec::download(kind_);
+    s.vapor = Exec::download(vapor_);
+    s.temperature = Exec::download(temperature_excess_);
+    for (float& t : s.temperature) t += settings_.ambient_temperature;
+    s.u = Exec::download(u_[0]);
+    s.v = Exec::download(u_[1]);
+    s.w = Exec::download(u_[2]);
+    s.ledger = ledger_;
+    return s;
+  }
+
+  // For tests and restarts: replace the fields (sizes as in snapshot()).
+  // Setting vapor restarts the ledger from the new mass.
+  void set_velocity(const std::vector<float>& u, const std::vector<float>& v, const std::vector<float>& w) {
+    Exec::upload(u_[0], u);
+    Exec::upload(u_[1], v);
+    Exec::upload(u_[2], w);
+  }
+  void set_temperature(const std::vector<float>& t) {
+    std::vector<float> excess(t);
+    for (float& e : excess) e -= settings_.ambient_temperature;
+    Exec::upload(temperature_excess_, excess);
+  }
+  void set_vapor(const Exec& exec, const std::vector<double>& rho) {
+    Exec::upload(vapor_, rho);
+    ledger_ = AirLedger{};
+    ledger_.initial = vapor_mass(exec);
+  }
+
+ private:
+  // Semi-Lagrangian, or MacCormack on top of it, from `source` into `out`.
+  template <class T>
+  void advect_field(const Exec& exec, const Lattice<T>& source, const FaceVelocity& vel, float dt, Buffer<T>& out,
+                    Buffer<T>& scratch) {
+    const std::size_t n = source.size();
+    const float c = dt / grid_.dx;
+    exec.parallel_for(n, AdvectSemiLagrangian<T>{source, vel, c, Exec::ptr(out)});
+    if (settings_.advection == AirAdvection::SemiLagrangian) return;
+    // Forward step in `out`, backward step in `scratch`; the corrected value
+    // overwrites the backward one in place (each point reads only its own).
+    Lattice<T> forward = source;
+    forward.value = Exec::ptr(out);
+    exec.parallel_for(n, AdvectSemiLagrangian<T>{forward, vel, -c, Exec::ptr(scratch)});
+    exec.parallel_for(n, MacCormackCorrect<T>{source, vel, c, Exec::ptr(out), Exec::ptr(scratch), Exec::ptr(scratch)});
+    out.swap(scratch);
+  }
+
+  AirSettings settings_;
+  MacGrid grid_;
+  DomainFaces faces_;
+  BuoyancyParameters buoyancy_{};
+  Buffer<AirInflow> inflows_;
+  Buffer<std::uint8_t> kind_, static_kind_, inflow_of_, unknown_;
+  Buffer<float> u_[3], u_tmp_[3], u_back_[3];
+  Buffer<float> temperature_excess_, temperature_tmp_, temperature_back_, phi_, rhs_, omega_norm_;
+  Buffer<double> vapor_, vapor_tmp_, vapor_flux_[3];
+  Buffer<Vec3> cell_velocity_, omega_, force_;
+  PoissonPcg<Exec> pcg_;
+  AirLedger ledger_;
+};
+
+}  // namespace dp

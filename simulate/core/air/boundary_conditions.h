@@ -1,0 +1,90 @@
+#pragma once
+// Alg. 1 line 8's boundary conditions. A face is free (the flow and the
+// pressure projection decide it) when it separates two air cells, or lies on
+// an open domain face next to an air cell. Every other face is prescribed:
+// the inflow velocity where it touches an inflow cell, else zero (closed
+// domain walls, rigid and liquid cells: no flow through them).
+#include "air/air_settings.h"
+#include "air/cell_kind.h"
+
+namespace dp {
+
+// The two cells a face separates; `lo`/`hi` is false where that side lies
+// outside the domain.
+struct FaceSides {
+  bool lo, hi;
+  std::size_t cell_lo, cell_hi;
+};
+
+DP_HD inline FaceSides face_sides(const MacGrid& g, int axis, std::size_t f) {
+  int i, j, k;
+  g.face_coords(axis, f, i, j, k);
+  const int a = axis == 0 ? i : (axis == 1 ? j : k);
+  FaceSides s;
+  s.lo = a > 0;
+  s.hi = a < g.n(axis);
+  s.cell_lo = s.lo ? g.cell(i - (axis == 0), j - (axis == 1), k - (axis == 2)) : 0;
+  s.cell_hi = s.hi ? g.cell(i, j, k) : 0;
+  return s;
+}
+
+// True where the flow and the projection decide the face's velocity.
+DP_HD inline bool face_is_free(const CellKinds& cells, int axis, const FaceSides& s) {
+  if (s.lo && s.hi) return cells.kind[s.cell_lo] == kAirCell && cells.kind[s.cell_hi] == kAirCell;
+  const std::size_t inner = s.lo ? s.cell_lo : s.cell_hi;
+  return cells.faces.open(axis, s.lo ? 1 : 0) && cells.kind[inner] == kAirCell;
+}
+
+struct EnforceFaceVelocity {
+  CellKinds cells;
+  int axis;
+  const std::uint8_t* inflow_of_cell;  // 0: none, else index + 1
+  const AirInflow* inflows;
+  float* u;
+
+  DP_HD void operator()(std::size_t f) const {
+    const FaceSides s = face_sides(cells.grid, axis, f);
+    if (face_is_free(cells, axis, s)) return;
+    // Walls (closed faces, rigid and liquid cells) win over inflows.
+    const bool wall_lo = s.lo ? (cells.kind[s.cell_lo] == kSolidCell || cells.kind[s.cell_lo] == kLiquidCell)
+                              : !cells.faces.open(axis, 0);
+    const bool wall_hi = s.hi ? (cells.kind[s.cell_hi] == kSolidCell || cells.kind[s.cell_hi] == kLiquidCell)
+                              : !cells.faces.open(axis, 1);
+    if (wall_lo || wall_hi) {
+      u[f] = 0.0f;
+      return;
+    }
+    const int in_lo = s.lo ? inflow_of_cell[s.cell_lo] : 0, in_hi = s.hi ? inflow_of_cell[s.cell_hi] : 0;
+    const int n = in_hi ? in_hi : in_lo;
+    u[f] = n ? inflows[n - 1].velocity[axis] : 0.0f;
+  }
+};
+
+// The vapor mass (kg) an inflow cell gains when its vapor is reset to the
+// prescribed value: the inflow's contribution to the mass ledger.
+struct InflowVaporGain {
+  const std::uint8_t* inflow_of_cell;
+  const AirInflow* inflows;
+  const double* vapor;
+  double cell_volume;
+  DP_HD double operator()(std::size_t c) const {
+    const int n = inflow_of_cell[c];
+    return n ? (inflows[n - 1].vapor - vapor[c]) * cell_volume : 0.0;
+  }
+};
+
+struct ApplyInflowScalars {
+  const std::uint8_t* inflow_of_cell;
+  const AirInflow* inflows;
+  float ambient_temperature;
+  double* vapor;
+  float* temperature_excess;  // T - T_amb
+  DP_HD void operator()(std::size_t c) const {
+    const int n = inflow_of_cell[c];
+    if (!n) return;
+    vapor[c] = inflows[n - 1].vapor;
+    temperature_excess[c] = inflows[n - 1].temperature - ambient_temperature;
+  }
+};
+
+}  // namespace dp

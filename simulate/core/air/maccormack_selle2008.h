@@ -1,0 +1,28 @@
+#pragma once
+// MacCormack advection (Selle, Fedkiw, Kim, Liu & Osher 2008), the optional
+// second-order alternative to plain semi-Lagrangian: a forward step
+// phi^ = A(phi), a backward step phi~ = A^R(phi^), and the corrected
+// phi^ + (phi - phi~)/2, clamped to the values the forward step interpolated
+// from so that no new extrema appear.
+#include "air/semi_lagrangian_stam1999.h"
+
+namespace dp {
+
+template <class T>
+struct MacCormackCorrect {
+  Lattice<T> source;  // phi at the start of the step
+  FaceVelocity velocity;
+  float cells_per_speed;  // dt / dx
+  const T* forward;   // phi^
+  const T* backward;  // phi~
+  T* out;
+
+  DP_HD void operator()(std::size_t n) const {
+    T lo, hi;
+    source.sample(trace_back(velocity, source.point(n), cells_per_speed), &lo, &hi);
+    const T v = forward[n] + static_cast<T>(0.5) * (source.value[n] - backward[n]);
+    out[n] = v < lo ? lo : (v > hi ? hi : v);
+  }
+};
+
+}  // namespace dp

@@ -1,0 +1,32 @@
+#pragma once
+// Semi-Lagrangian advection (Stam 1999; paper Eq. 2-4, Alg. 1 line 9): each
+// grid point takes the value found where the flow came from, traced back
+// through the velocity field with the midpoint rule. Unconditionally stable;
+// used for velocity and temperature. MacCormack's correction on top of it is
+// in maccormack_selle2008.h.
+#include "air/staggered_sampling.h"
+
+namespace dp {
+
+// Where the fluid at p was a time ago; `cells_per_speed` = dt / dx, so that
+// velocity times it is a displacement in cells (negative: traces forwards).
+DP_HD inline GridPoint trace_back(const FaceVelocity& velocity, GridPoint p, float cells_per_speed) {
+  GridPoint mid = p;
+  mid.offset -= (0.5f * cells_per_speed) * velocity.at(p);
+  p.offset -= cells_per_speed * velocity.at(mid);
+  return p;
+}
+
+// out[n] = source(trace_back(x_n)) for every point x_n of source's lattice
+// (cell centres or the faces of one axis).
+template <class T>
+struct AdvectSemiLagrangian {
+  Lattice<T> source;
+  FaceVelocity velocity;
+  float cells_per_speed;  // dt / dx
+  T* out;
+
+  DP_HD void operator()(std::size_t n) const { out[n] = source.sample(trace_back(velocity, source.point(n), cells_per_speed)); }
+};
+
+}  // namespace dp
