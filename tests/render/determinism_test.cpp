@@ -45,16 +45,16 @@ class render_determinism : public ::testing::Test {
 };
 
 TEST_F(render_determinism, OneAndTwoThreadsGiveTheSameBits) {
-  const Image one = render_image(scene_, settings_, 1);
-  const Image two = render_image(scene_, settings_, 2);
+  const Image one = render_image(scene_, settings_, 1).beauty;
+  const Image two = render_image(scene_, settings_, 2).beauty;
   EXPECT_TRUE(bit_identical(one, two));
 }
 
 TEST_F(render_determinism, SameSeedSameImageOtherSeedOtherImage) {
-  const Image first = render_image(scene_, settings_, 0);
-  EXPECT_TRUE(bit_identical(first, render_image(scene_, settings_, 0)));
+  const Image first = render_image(scene_, settings_, 0).beauty;
+  EXPECT_TRUE(bit_identical(first, render_image(scene_, settings_, 0).beauty));
   settings_.seed += 1;
-  const Image reseeded = render_image(scene_, settings_, 0);
+  const Image reseeded = render_image(scene_, settings_, 0).beauty;
   ASSERT_EQ(first.pixels.size(), reseeded.pixels.size());
   int differing = 0;
   for (std::size_t i = 0; i < first.pixels.size(); ++i)

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "fresnel.h"
-#include "smooth_dielectric.h"
+#include "dielectric_bsdf.h"
 
 namespace dp::render {
 namespace {
@@ -42,7 +42,7 @@ TEST(render_fresnel, BeyondTheCriticalAngleEverythingReflects) {
 TEST(render_fresnel, DielectricChoosesReflectionWithFresnelProbability) {
   const float n = 1.5f;
   const float r = std::pow((n - 1) / (n + 1), 2.0f);
-  const SmoothDielectric glass(n, {});
+  const DielectricBsdf glass(n, 0);
   const Vec3 wo{0, 0, 1};
 
   auto reflected = glass.sample(wo, 0.999f * r, {});
@@ -60,7 +60,7 @@ TEST(render_fresnel, DielectricChoosesReflectionWithFresnelProbability) {
 
 TEST(render_fresnel, RefractionObeysSnellsLaw) {
   const float n = 1.33f;
-  const SmoothDielectric water(n, {});
+  const DielectricBsdf water(n, 0);
   const float sin_incident = 0.6f;
   const Vec3 wo{sin_incident, 0, 0.8f};
   auto refracted = water.sample(wo, 0.999f, {});  // R at 37 degrees is far below 0.999

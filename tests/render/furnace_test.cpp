@@ -4,7 +4,7 @@
 // mean other than 1.
 #include <gtest/gtest.h>
 
-#include "pinhole_camera.h"
+#include "perspective_camera.h"
 #include "render_image.h"
 #include "render_scene.h"
 #include "test_meshes.h"
@@ -40,11 +40,11 @@ Rgb furnace_mean(const dp::io::Material& material) {
   const RenderScene scene({{"sphere", test::icosphere({0, 0, 0}, 1, 4), material, ShadingNormals::Interpolated}});
   const dp::io::RenderSettings settings = furnace_settings();
   // Every corner ray must meet the sphere, or the test would see the sky.
-  const PinholeCamera camera(settings.camera, settings.width, settings.height);
+  const PerspectiveCamera camera(settings.camera, settings.width, settings.height);
   for (int x : {0, settings.width})
     for (int y : {0, settings.height})
       EXPECT_TRUE(scene.intersect(camera.ray_through(static_cast<float>(x), static_cast<float>(y))));
-  const Rgb m = mean(render_image(scene, settings, 0));
+  const Rgb m = mean(render_image(scene, settings, 0).beauty);
   std::printf("furnace mean: %.6f %.6f %.6f\n", m.r, m.g, m.b);
   return m;
 }
