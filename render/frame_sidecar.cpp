@@ -22,6 +22,7 @@ nlohmann::json sidecar_json(const FrameRecord& r) {
           {"threads", r.threads},
           {"render_time_s", r.render_time_s},
           {"samples_per_s", r.render_time_s > 0 ? samples / r.render_time_s : 0.0},
+          {"sampler", r.sampler},
           {"camera", r.camera},
           {"filter", r.filter},
           {"environment", r.environment},

@@ -22,6 +22,7 @@ struct FrameRecord {
   double exposure_stops = 0;
   int threads = 0;  // 0: all cores
   double render_time_s = 0;  // wall-clock, image only (no file I/O)
+  std::string sampler;       // sobol or independent
   std::string camera;        // pinhole or thin_lens
   std::string filter;        // box, tent or gaussian
   std::string environment;   // sky, constant or map

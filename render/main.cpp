@@ -187,6 +187,7 @@ int run(const Options& opt) {
                                          .exposure_stops = settings.exposure_stops,
                                          .threads = opt.threads,
                                          .render_time_s = seconds,
+                                         .sampler = settings.sampler == dp::io::SamplerType::Sobol ? "sobol" : "independent",
                                          .camera = camera_name(settings.camera.model),
                                          .filter = filter_name(settings.filter.type),
                                          .environment = environment_name(settings.environment.type),

@@ -58,9 +58,7 @@ float PathTracer::area_light_pdf(const SurfaceHit& light_hit, Vec3 from) const {
 }
 
 Rgb PathTracer::sample_direct_light(const SurfaceHit& hit, const Bsdf& bsdf, const ShadingFrame& frame, Vec3 wo,
-                                    Rgb medium_absorption, RandomStream& random) const {
-  const float u_choice = random.uniform();
-  const Sample2 u{random.uniform(), random.uniform()};
+                                    Rgb medium_absorption, float u_choice, Sample2 u) const {
   Vec3 wi_world;
   Rgb incoming;
   float light_pdf = 0;
@@ -129,10 +127,16 @@ PathSample PathTracer::trace(Ray ray, RandomStream& random) const {
     const Bsdf bsdf = hit->material->bsdf_at(hit->surface);
     if (depth == 0) result.first = {true, hit->distance, hit->shading_normal, bsdf.albedo()};
 
-    if (!bsdf.specular()) result.radiance += throughput * sample_direct_light(*hit, bsdf, frame, wo, medium_absorption, random);
-
+    // Every vertex draws the same numbers in the same order, used or not,
+    // so a dimension of a stratified sequence always serves one purpose.
+    const float u_light_choice = random.uniform();
+    const Sample2 u_light = random.uniform2();
     const float u_lobe = random.uniform();
-    const Sample2 u{random.uniform(), random.uniform()};
+    const Sample2 u = random.uniform2();
+    const float u_roulette = random.uniform();
+    if (!bsdf.specular())
+      result.radiance += throughput * sample_direct_light(*hit, bsdf, frame, wo, medium_absorption, u_light_choice, u_light);
+
     const std::optional<BsdfSample> scattered = bsdf.sample(wo, u_lobe, u);
     if (!scattered) break;
     throughput *= scattered->weight;
@@ -144,7 +148,7 @@ PathSample PathTracer::trace(Ray ray, RandomStream& random) const {
 
     if (depth + 1 >= kRouletteStartDepth) {
       const float survival = std::min(kMaxSurvivalProbability, max_component(throughput));
-      if (random.uniform() >= survival) break;
+      if (u_roulette >= survival) break;
       throughput *= 1 / survival;
     }
     // The shading normal agrees with the facet on wo's side, so wi's side of

@@ -42,7 +42,7 @@ class PathTracer {
  private:
   // One light sample at a scattering vertex, MIS-weighted against the BSDF.
   Rgb sample_direct_light(const SurfaceHit& hit, const Bsdf& bsdf, const ShadingFrame& frame, Vec3 wo,
-                          Rgb medium_absorption, RandomStream& random) const;
+                          Rgb medium_absorption, float u_choice, Sample2 u) const;
   // Density with which light sampling would have chosen this direction.
   float environment_light_pdf(Vec3 direction) const;
   float area_light_pdf(const SurfaceHit& light_hit, Vec3 from) const;

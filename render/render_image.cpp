@@ -35,9 +35,10 @@ struct Pixel {
   void render(RenderedImage& image, int x, int y) const {
     PixelSums sums;
     for (int i = 0; i < settings.spp; ++i) {
-      RandomStream random(settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), static_cast<std::uint32_t>(i));
-      const Sample2 offset = filter.sample_offset({random.uniform(), random.uniform()});
-      const Sample2 lens{random.uniform(), random.uniform()};
+      RandomStream random(settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), static_cast<std::uint32_t>(i),
+                          settings.sampler == dp::io::SamplerType::Sobol ? SampleSequence::Sobol : SampleSequence::Independent);
+      const Sample2 offset = filter.sample_offset(random.uniform2());
+      const Sample2 lens = random.uniform2();
       const Ray ray = camera.ray_through(static_cast<float>(x) + 0.5f + offset.u1, static_cast<float>(y) + 0.5f + offset.u2, lens);
       const PathSample s = tracer.trace(ray, random);
       for (int c = 0; c < 3; ++c) {

@@ -2,7 +2,7 @@
 Cycles, on the CPU, with the same meshes, camera, environment map, spp and
 path length as dewpoint-render:
 
-  blender -b --factory-startup -P cycles_glass.py -- SCENE_DIR OUT.exr SPP WIDTH HEIGHT THREADS
+  blender -b --factory-startup -P cycles_glass.py -- SCENE_DIR OUT.exr SPP WIDTH HEIGHT THREADS [SEED]
 
 Cycles' settings are chosen to match ours: no adaptive sampling, no
 denoising, no clamping, caustics on, 12 bounces of every kind. Scene files
@@ -17,8 +17,10 @@ import time
 
 import bpy
 
-scene_dir, out_path, spp, width, height, threads = sys.argv[sys.argv.index("--") + 1:]
-spp, width, height, threads = int(spp), int(width), int(height), int(threads)
+arguments = sys.argv[sys.argv.index("--") + 1:]
+scene_dir, out_path = arguments[:2]
+spp, width, height, threads = (int(a) for a in arguments[2:6])
+seed = int(arguments[6]) if len(arguments) > 6 else 1
 with open(os.path.join(scene_dir, "scene.json")) as f:
     description = json.load(f)
 render = description["render"]
@@ -41,7 +43,7 @@ c.volume_bounces = 0
 c.sample_clamp_direct = c.sample_clamp_indirect = 0
 c.caustics_reflective = c.caustics_refractive = True
 c.blur_glossy = 0
-c.seed = 1
+c.seed = seed
 scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = width, height, 100
 scene.render.threads_mode = "FIXED"
 scene.render.threads = threads

@@ -152,6 +152,10 @@ RenderSettings read_render_settings(JsonObject o, const std::vector<std::string>
   std::int64_t seed = o.integer("seed", 1);
   if (seed < 0) throw o.error("seed", "expected a non-negative integer");
   r.seed = static_cast<std::uint64_t>(seed);
+  const std::string sampler = o.string("sampler", "sobol");
+  if (sampler == "sobol") r.sampler = SamplerType::Sobol;
+  else if (sampler == "independent") r.sampler = SamplerType::Independent;
+  else throw o.error("sampler", "expected sobol or independent, found '" + sampler + "'");
   r.exposure_stops = o.number("exposure_stops", 0);
   r.camera = read_camera(o.object("camera"));
   r.filter = read_filter(o.optional_object("filter"));

@@ -66,6 +66,10 @@ struct EnvironmentSettings {
   double intensity = 1.0;
 };
 
+// How a pixel's samples are placed: independently, or as an Owen-scrambled
+// Sobol sequence (stratified, lower error at equal spp).
+enum class SamplerType { Independent, Sobol };
+
 struct AovSelection {
   bool albedo = true, normal = true, depth = true;
 };
@@ -75,6 +79,7 @@ struct RenderSettings {
   int spp = 32;
   int max_depth = 12;
   std::uint64_t seed = 1;
+  SamplerType sampler = SamplerType::Sobol;
   double exposure_stops = 0;
   CameraSettings camera;
   FilterSettings filter;

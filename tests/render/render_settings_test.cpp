@@ -55,6 +55,7 @@ TEST_F(render_settings, NewKeysAndTheirDefaults) {
   EXPECT_EQ(defaults.render.environment.type, dp::io::EnvironmentType::Sky);
   EXPECT_TRUE(defaults.render.aovs.albedo && defaults.render.aovs.normal && defaults.render.aovs.depth);
   EXPECT_TRUE(defaults.render.wet_paths);
+  EXPECT_EQ(defaults.render.sampler, dp::io::SamplerType::Sobol);
 
   nlohmann::json render = nlohmann::json::parse(std::string(kBase) + "}");
   render["materials"]["tray"] = {{"type", "conductor"}, {"roughness", 0.01}, {"fogged_roughness", 0.6}, {"wet_roughness", 0.0}, {"wet_darkening", 0.3}};
@@ -86,6 +87,7 @@ TEST_F(render_settings, ThinLensNeedsAnAperture) {
 
 TEST_F(render_settings, BadValuesNameTheKey) {
   EXPECT_NE(error_of(with(R"("filter": {"type": "mitchell"})")).find("render.filter.type"), std::string::npos);
+  EXPECT_NE(error_of(with(R"("sampler": "halton")")).find("render.sampler"), std::string::npos);
   EXPECT_NE(error_of(with(R"("environment": {"type": "map"})")).find("render.environment.file"), std::string::npos);
   EXPECT_NE(error_of(with(R"("aovs": "albedo,velocity")")).find("velocity"), std::string::npos);
   nlohmann::json rough_water = nlohmann::json::parse(std::string(kBase) + "}");
