@@ -8,12 +8,12 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
-#include <mutex>
 #include <optional>
 #include <tuple>
 
 #include "cli_common.h"
 #include "dewpoint/version.h"
+#include "frame_progress.h"
 #include "frame_sidecar.h"
 #include "frames.h"
 #include "image_output.h"
@@ -41,35 +41,6 @@ struct Options {
   std::string aovs;
   bool no_wet_paths = false;
   bool quiet = false;
-};
-
-// Progress lines within and across frames, at most one every few seconds,
-// from whichever worker thread finishes a tile.
-class FrameProgress {
- public:
-  FrameProgress(const std::string& what, std::size_t frames, bool quiet) : progress_(what, static_cast<long>(frames) * kUnits, quiet) {}
-
-  void tile_done(std::size_t frames_before, int frame, double fraction) {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last_ < std::chrono::seconds(2)) return;
-    last_ = now;
-    char detail[64];
-    std::snprintf(detail, sizeof detail, "frame %d %3.0f %%", frame, 100 * fraction);
-    progress_.update(static_cast<long>(frames_before) * kUnits + static_cast<long>(fraction * kUnits), detail);
-  }
-  void frame_done(std::size_t frames_done, const std::string& detail) {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    last_ = std::chrono::steady_clock::now();
-    progress_.update(static_cast<long>(frames_done) * kUnits, detail);
-  }
-  void finish(const std::string& summary) { progress_.finish(summary); }
-
- private:
-  static constexpr long kUnits = 1000;  // per frame
-  dp::io::Progress progress_;
-  std::mutex mutex_;
-  std::chrono::steady_clock::time_point last_{};
 };
 
 const char* camera_name(dp::io::CameraModel m) { return m == dp::io::CameraModel::ThinLens ? "thin_lens" : "pinhole"; }
@@ -159,7 +130,7 @@ int run(const Options& opt) {
 
   fs::create_directories(opt.out);
   const std::string software = std::string("dewpoint-render ") + dp::kVersion;
-  FrameProgress progress("render " + scene.name, jobs.size(), opt.quiet);
+  dp::render::FrameProgress progress("render " + scene.name, jobs.size(), opt.quiet);
   std::size_t done = 0;
   for (const FrameJob& job : jobs) {
     const int f = job.entry.index;

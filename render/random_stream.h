@@ -86,12 +86,24 @@ class RandomStream {
     return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
   }
   // Sobol's second dimension (primitive polynomial x + 1): direction
-  // numbers v_0 = 2^31, v_j = v_{j-1} xor (v_{j-1} >> 1).
-  static constexpr std::uint32_t sobol_second_dimension(std::uint32_t index) {
-    std::uint32_t result = 0, v = 1u << 31;
-    for (; index; index >>= 1, v ^= v >> 1)
-      if (index & 1) result ^= v;
-    return result;
+  // numbers v_0 = 2^31, v_j = v_{j-1} xor (v_{j-1} >> 1); the result is the
+  // xor of v_j over the index's set bits, looked up a byte at a time.
+  struct SobolBytes {
+    std::uint32_t table[4][256] = {};
+    constexpr SobolBytes() {
+      std::uint32_t v[32] = {};
+      v[0] = 1u << 31;
+      for (int j = 1; j < 32; ++j) v[j] = v[j - 1] ^ (v[j - 1] >> 1);
+      for (int b = 0; b < 4; ++b)
+        for (int byte = 0; byte < 256; ++byte)
+          for (int bit = 0; bit < 8; ++bit)
+            if (byte & (1 << bit)) table[b][byte] ^= v[8 * b + bit];
+    }
+  };
+  static std::uint32_t sobol_second_dimension(std::uint32_t index) {
+    static constexpr SobolBytes bytes;
+    return bytes.table[0][index & 0xff] ^ bytes.table[1][(index >> 8) & 0xff] ^ bytes.table[2][(index >> 16) & 0xff] ^
+           bytes.table[3][index >> 24];
   }
   std::uint32_t scramble_seed(std::uint64_t dimension, std::uint64_t which) const {
     return static_cast<std::uint32_t>(mix64(key_ ^ (dimension * 4 + which) * kGolden));
