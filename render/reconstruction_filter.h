@@ -6,6 +6,8 @@
 // separable filters the density is exact, so every sample weighs 1 and a
 // pixel depends on its own samples only (no splatting to neighbours, which
 // keeps tiles independent and the image thread-count-invariant).
+#include <vector>
+
 #include "render_settings.h"
 #include "sampling.h"
 
@@ -27,6 +29,10 @@ class ReconstructionFilter {
   dp::io::FilterType type_;
   float radius_, sigma_;
   float erf_radius_ = 0;  // Gaussian: erf(radius / (sigma sqrt 2))
+  // Gaussian: its inverse CDF at u = i / (size - 1), computed once, read
+  // with linear interpolation (an exact erf^-1 per sample costs more than a
+  // shadow ray; the table's 4096 cells are far below a pixel's resolution).
+  std::vector<float> inverse_cdf_;
 };
 
 }  // namespace dp::render

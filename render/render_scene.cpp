@@ -72,6 +72,13 @@ void RenderScene::attach(const SceneObject& object, bool wet_paths) {
     if (mesh.normals.size() != mesh.positions.size())
       throw std::invalid_argument(object.name + ": interpolated shading needs one normal per vertex");
     g.normals = mesh.normals;
+    g.wound_inwards.resize(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      const Vec3 a = to_vec3(mesh.positions[tri[0]]), b = to_vec3(mesh.positions[tri[1]]), c = to_vec3(mesh.positions[tri[2]]);
+      const Vec3 vertex_sum = to_vec3(mesh.normals[tri[0]]) + to_vec3(mesh.normals[tri[1]]) + to_vec3(mesh.normals[tri[2]]);
+      g.wound_inwards[t] = dot(vertex_sum, cross(b - a, c - a)) < 0;
+    }
   }
   if (object.texture) {
     g.uvs = mesh.uvs;
@@ -102,11 +109,8 @@ void RenderScene::add_area_light(unsigned id, const SceneObject& object) {
 // mesh with vertex normals says itself where its outside is, whatever its
 // winding; flat-shaded rigids must wind counter-clockwise seen from outside.
 Vec3 RenderScene::outward_normal(const Geometry& g, unsigned triangle, Vec3 embree_normal) const {
-  Vec3 n = normalize(embree_normal);
-  if (g.normals.empty()) return n;
-  const auto& t = g.triangles[triangle];
-  const Vec3 vertex_sum = to_vec3(g.normals[t[0]]) + to_vec3(g.normals[t[1]]) + to_vec3(g.normals[t[2]]);
-  return dot(vertex_sum, n) < 0 ? -n : n;
+  const Vec3 n = normalize(embree_normal);
+  return !g.wound_inwards.empty() && g.wound_inwards[triangle] ? -n : n;
 }
 
 Vec3 RenderScene::interpolated_normal(const Geometry& g, unsigned triangle, float u, float v) const {

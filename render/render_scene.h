@@ -69,6 +69,7 @@ class RenderScene {
     std::unique_ptr<Material> material;
     std::vector<std::array<std::uint32_t, 3>> triangles;  // kept for normals and UVs
     std::vector<std::array<float, 3>> normals;           // per vertex, or empty
+    std::vector<std::uint8_t> wound_inwards;             // per triangle, with vertex normals: winding disagrees with them
     std::vector<std::array<float, 2>> uvs;               // per vertex, with a texture
     std::shared_ptr<const SurfaceTexture> texture;
   };
