@@ -4,6 +4,7 @@
 // direction for next-event estimation and evaluated for the paths that
 // escape. World up is +y.
 #include <memory>
+#include <numbers>
 
 #include "render_settings.h"
 #include "rgb.h"
@@ -34,6 +35,6 @@ std::unique_ptr<EnvironmentLight> make_environment(const dp::io::EnvironmentSett
 
 // Directions drawn uniformly over the sphere: enough for smooth environments.
 Vec3 sample_uniform_sphere(Sample2 u);
-inline constexpr float kUniformSpherePdf = 1 / (4 * 3.14159265358979f);
+inline constexpr float kUniformSpherePdf = std::numbers::inv_pi_v<float> / 4;
 
 }  // namespace dp::render
