@@ -7,6 +7,8 @@ namespace dp::render {
 
 nlohmann::json sidecar_json(const FrameRecord& r) {
   const double samples = static_cast<double>(r.width) * r.height * r.spp;
+  nlohmann::json textures = nlohmann::json::array();
+  for (const auto& t : r.surface_textures) textures.push_back(t.string());
   return {{"generator", std::string("dewpoint-render ") + dp::kVersion},
           {"scene_file", r.scene_file.string()},
           {"liquid_mesh", r.liquid_mesh.string()},
@@ -20,7 +22,15 @@ nlohmann::json sidecar_json(const FrameRecord& r) {
           {"threads", r.threads},
           {"render_time_s", r.render_time_s},
           {"samples_per_s", r.render_time_s > 0 ? samples / r.render_time_s : 0.0},
-          {"integrator", "unidirectional path tracing, BSDF sampling, sky gradient environment"}};
+          {"sampler", r.sampler},
+          {"camera", r.camera},
+          {"filter", r.filter},
+          {"environment", r.environment},
+          {"aovs", r.aovs},
+          {"wet_paths", r.wet_paths},
+          {"area_light_triangles", r.area_light_triangles},
+          {"surface_textures", textures},
+          {"integrator", "unidirectional path tracing, next-event estimation with MIS (power heuristic), Russian roulette"}};
 }
 
 void write_sidecar(const std::filesystem::path& file, const FrameRecord& record) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +22,14 @@ struct FrameRecord {
   double exposure_stops = 0;
   int threads = 0;  // 0: all cores
   double render_time_s = 0;  // wall-clock, image only (no file I/O)
+  std::string sampler;       // sobol or independent
+  std::string camera;        // pinhole or thin_lens
+  std::string filter;        // box, tent or gaussian
+  std::string environment;   // sky, constant or map
+  std::string aovs;          // the EXR's auxiliary channels
+  bool wet_paths = true;
+  std::size_t area_light_triangles = 0;
+  std::vector<std::filesystem::path> surface_textures;  // rigid textures used for this frame
 };
 
 nlohmann::json sidecar_json(const FrameRecord& record);

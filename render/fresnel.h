@@ -1,6 +1,8 @@
 #pragma once
-// Fresnel equations for a smooth boundary between two dielectrics.
+// Fresnel equations: how much light a smooth boundary reflects.
 #include <optional>
+
+#include "rgb.h"
 
 namespace dp::render {
 
@@ -19,5 +21,11 @@ FresnelReflectance fresnel_dielectric(float cos_incident, float eta);
 // Cosine of the refracted direction's angle to the normal (Snell's law), or
 // nothing under total internal reflection.
 std::optional<float> refracted_cosine(float cos_incident, float eta);
+
+// Unpolarised reflectance of a conductor with complex refractive index
+// eta + i k (relative to the incident medium), from the same equations
+// with a complex index (Born & Wolf, Principles of Optics, Sec. 14.2).
+float fresnel_conductor(float cos_incident, float eta, float k);
+Rgb fresnel_conductor(float cos_incident, Rgb eta, Rgb k);
 
 }  // namespace dp::render

@@ -40,13 +40,34 @@ float linear_to_srgb(float v) {
 }
 
 void write_exr(const std::filesystem::path& file, const Image& image, const std::string& software) {
-  std::vector<float> rgba;
-  rgba.reserve(image.pixels.size() * 4);
-  for (const Rgb& p : image.pixels) rgba.insert(rgba.end(), {p.r, p.g, p.b, 1.0f});
-  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
+  RenderedImage only_beauty(image.width, image.height);
+  only_beauty.beauty = image;
+  write_exr(file, only_beauty, dp::io::AovSelection{false, false, false}, software);
+}
+
+void write_exr(const std::filesystem::path& file, const RenderedImage& image, const dp::io::AovSelection& aovs,
+               const std::string& software) {
+  std::vector<std::string> names{"R", "G", "B", "A"};
+  if (aovs.albedo) names.insert(names.end(), {"albedo.R", "albedo.G", "albedo.B"});
+  if (aovs.normal) names.insert(names.end(), {"normal.X", "normal.Y", "normal.Z"});
+  if (aovs.depth) names.push_back("Z");
+  const std::size_t n = image.beauty.pixels.size();
+  std::vector<float> interleaved;
+  interleaved.reserve(n * names.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const Rgb& p = image.beauty.pixels[i];
+    interleaved.insert(interleaved.end(), {p.r, p.g, p.b, 1.0f});
+    if (aovs.albedo) interleaved.insert(interleaved.end(), {image.albedo.pixels[i].r, image.albedo.pixels[i].g, image.albedo.pixels[i].b});
+    if (aovs.normal) interleaved.insert(interleaved.end(), {image.normal.pixels[i].r, image.normal.pixels[i].g, image.normal.pixels[i].b});
+    if (aovs.depth) interleaved.push_back(image.depth[i]);
+  }
+  OIIO::ImageSpec spec(image.beauty.width, image.beauty.height, static_cast<int>(names.size()), OIIO::TypeDesc::FLOAT);
+  spec.channelnames = names;
+  spec.alpha_channel = 3;
+  spec.z_channel = aovs.depth ? static_cast<int>(names.size()) - 1 : -1;
   spec.attribute("compression", "zip");
   spec.attribute("Software", software);
-  write_atomically_with_oiio(file, "openexr", spec, rgba);
+  write_atomically_with_oiio(file, "openexr", spec, interleaved);
 }
 
 void write_png_preview(const std::filesystem::path& file, const Image& image, double exposure_stops,

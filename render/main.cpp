@@ -13,11 +13,12 @@
 
 #include "cli_common.h"
 #include "dewpoint/version.h"
+#include "frame_progress.h"
 #include "frame_sidecar.h"
 #include "frames.h"
 #include "image_output.h"
 #include "liquid_mesh.h"
-#include "pinhole_camera.h"
+#include "perspective_camera.h"
 #include "render_image.h"
 #include "render_scene.h"
 #include "scene.h"
@@ -37,8 +38,24 @@ struct Options {
   std::string resolution;
   std::optional<std::int64_t> seed;
   int threads = 0;
+  std::string aovs;
+  bool no_wet_paths = false;
   bool quiet = false;
 };
+
+const char* camera_name(dp::io::CameraModel m) { return m == dp::io::CameraModel::ThinLens ? "thin_lens" : "pinhole"; }
+const char* filter_name(dp::io::FilterType f) {
+  return f == dp::io::FilterType::Box ? "box" : (f == dp::io::FilterType::Tent ? "tent" : "gaussian");
+}
+const char* environment_name(dp::io::EnvironmentType e) {
+  return e == dp::io::EnvironmentType::Map ? "map" : (e == dp::io::EnvironmentType::Constant ? "constant" : "sky");
+}
+std::string aov_names(const dp::io::AovSelection& a) {
+  std::string names;
+  for (auto [on, name] : {std::pair{a.albedo, "albedo"}, {a.normal, "normal"}, {a.depth, "depth"}})
+    if (on) names += (names.empty() ? "" : ",") + std::string(name);
+  return names.empty() ? "none" : names;
+}
 
 struct FrameJob {
   dp::io::FrameEntry entry;
@@ -63,8 +80,16 @@ dp::io::RenderSettings settings_with_overrides(const dp::io::Scene& scene, const
   if (opt.spp) s.spp = *opt.spp;
   if (opt.seed) s.seed = static_cast<std::uint64_t>(*opt.seed);
   if (!opt.resolution.empty()) std::tie(s.width, s.height) = parse_resolution(opt.resolution);
+  if (!opt.aovs.empty()) {
+    try {
+      s.aovs = dp::io::parse_aov_list(opt.aovs);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--aov: ") + e.what());
+    }
+  }
+  if (opt.no_wet_paths) s.wet_paths = false;
   try {
-    const dp::render::PinholeCamera camera_check(s.camera, s.width, s.height);  // throws on a degenerate view
+    const dp::render::PerspectiveCamera camera_check(s.camera, s.width, s.height);  // throws on a degenerate view
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(scene.file.string() + ": " + e.what());
   }
@@ -92,11 +117,12 @@ std::vector<FrameJob> frame_jobs(const Options& opt) {
 
 int run(const Options& opt) {
   // Everything that can be wrong with the input is found before any output
-  // exists: scene, overrides, manifest, meshes.
+  // exists: scene, overrides, manifest, meshes, environment map.
   const dp::io::Scene scene = dp::io::load_scene(opt.scene);
   const dp::io::RenderSettings settings = settings_with_overrides(scene, opt);
   const std::vector<FrameJob> jobs = frame_jobs(opt);
-  const std::vector<dp::render::SceneObject> rigids = dp::render::load_rigid_objects(scene);
+  const std::vector<dp::render::SceneObject> rigids = dp::render::load_rigid_objects(scene, opt.frames_dir);
+  const std::unique_ptr<dp::render::EnvironmentLight> environment = dp::render::make_environment(settings.environment);
 
   // Limits Embree's BVH builds as well as the rendering.
   std::optional<tbb::global_control> thread_limit;
@@ -104,20 +130,22 @@ int run(const Options& opt) {
 
   fs::create_directories(opt.out);
   const std::string software = std::string("dewpoint-render ") + dp::kVersion;
-  dp::io::Progress progress("render " + scene.name, static_cast<long>(jobs.size()), opt.quiet);
-  long done = 0;
+  dp::render::FrameProgress progress("render " + scene.name, jobs.size(), opt.quiet);
+  std::size_t done = 0;
   for (const FrameJob& job : jobs) {
+    const int f = job.entry.index;
     std::vector<dp::render::SceneObject> objects = rigids;
+    const std::vector<fs::path> textures = dp::render::attach_surface_textures(objects, opt.frames_dir, f);
     objects.push_back(dp::render::liquid_object(dp::render::load_liquid_mesh(job.liquid_mesh), settings));
-    const dp::render::RenderScene render_scene(objects);
+    const dp::render::RenderScene render_scene(objects, settings.wet_paths);
 
     const auto start = std::chrono::steady_clock::now();
-    const dp::render::Image image = dp::render::render_image(render_scene, settings, opt.threads);
+    const dp::render::RenderedImage image = dp::render::render_image(
+        render_scene, *environment, settings, opt.threads, [&](double fraction) { progress.tile_done(done, f, fraction); });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    const int f = job.entry.index;
-    dp::render::write_exr(opt.out / dp::io::frame_file_name("beauty", f, "exr"), image, software);
-    dp::render::write_png_preview(opt.out / dp::io::frame_file_name("beauty", f, "png"), image, settings.exposure_stops, software);
+    dp::render::write_exr(opt.out / dp::io::frame_file_name("beauty", f, "exr"), image, settings.aovs, software);
+    dp::render::write_png_preview(opt.out / dp::io::frame_file_name("beauty", f, "png"), image.beauty, settings.exposure_stops, software);
     const dp::render::FrameRecord record{.scene_file = scene.file,
                                          .liquid_mesh = job.liquid_mesh,
                                          .frame = f,
@@ -129,11 +157,20 @@ int run(const Options& opt) {
                                          .seed = settings.seed,
                                          .exposure_stops = settings.exposure_stops,
                                          .threads = opt.threads,
-                                         .render_time_s = seconds};
+                                         .render_time_s = seconds,
+                                         .sampler = settings.sampler == dp::io::SamplerType::Sobol ? "sobol" : "independent",
+                                         .camera = camera_name(settings.camera.model),
+                                         .filter = filter_name(settings.filter.type),
+                                         .environment = environment_name(settings.environment.type),
+                                         .aovs = aov_names(settings.aovs),
+                                         .wet_paths = settings.wet_paths,
+                                         .area_light_triangles = render_scene.area_lights().count(),
+                                         .surface_textures = textures};
     dp::render::write_sidecar(opt.out / dp::io::frame_file_name("beauty", f, "json"), record);
-    char detail[64];
-    std::snprintf(detail, sizeof detail, "frame %d in %.2f s", f, seconds);
-    progress.update(++done, detail);
+    char detail[96];
+    const double samples = static_cast<double>(settings.width) * settings.height * settings.spp;
+    std::snprintf(detail, sizeof detail, "frame %d in %.2f s, %.2f M samples/s", f, seconds, samples / seconds * 1e-6);
+    progress.frame_done(++done, detail);
   }
   progress.finish(std::to_string(jobs.size()) + " frames in " + opt.out.string());
   return 0;
@@ -142,7 +179,7 @@ int run(const Options& opt) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"dewpoint-render: path-traces each frame's liquid mesh with the scene's rigids and sky"};
+  CLI::App app{"dewpoint-render: path-traces each frame's liquid mesh with the scene's rigids, lights and environment"};
   app.set_version_flag("--version", std::string("dewpoint-render ") + dp::kVersion);
   Options opt;
   app.add_option("scene", opt.scene, "scene file (JSON)")->required();
@@ -156,6 +193,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::int64_t{0}, std::numeric_limits<std::int64_t>::max()));
   app.add_option("--threads", opt.threads, "CPU threads (0: all); images are identical for any count")
       ->check(CLI::Range(0, 1 << 16));
+  app.add_option("--aov", opt.aovs, "auxiliary EXR channels: comma-separated albedo,normal,depth, or none (default: the scene's render.aovs)");
+  app.add_flag("--no-wet-paths", opt.no_wet_paths, "ignore the surface textures' wetting history");
   app.add_flag("--quiet", opt.quiet, "no progress output");
   try {
     app.parse(argc, argv);

@@ -1,43 +1,47 @@
 #pragma once
-// The scattering interface every surface implements. Directions are in the
-// local shading frame: z is the surface normal, pointing to the object's
-// outside; wo points back along the arriving path, wi along the next one.
+// A scene material (render.materials.NAME) as the renderer uses it: the BSDF
+// it has at a surface point, given that point's condensed water, and the
+// light it emits or absorbs.
 //
-// Today's materials are all either Lambertian or perfectly specular, and
-// the integrator only samples. The eval/pdf pair is what next-event
-// estimation with multiple importance sampling will need, and a material
-// that varies over the surface (textured roughness, GGX microfacets) will
-// take the hit's texture coordinates in addition.
-#include <optional>
-
+// The roughness follows the paper's rendering of steamed surfaces
+// (Hochstetter & Kolb 2017, Sec. 8: "a rough material where the roughness
+// was controlled by the water mass textures"):
+//   alpha = lerp(alpha_dry, alpha_fogged, clamp(m_t / m_t^max, 0, 1)),
+// and, where wet paths are on, a texel a drop has run over (wetting history
+// w) moves towards the wet roughness and darkens:
+//   alpha <- lerp(alpha, alpha_wet, w),   reflectance *= 1 - darkening * w.
+#include "bsdf.h"
+#include "render_settings.h"
 #include "rgb.h"
-#include "sampling.h"
-#include "vec3.h"
 
 namespace dp::render {
 
-struct BsdfSample {
-  Vec3 wi;
-  Rgb weight;         // f * |cos(theta_i)| / pdf: the factor the path throughput takes
-  float pdf = 0;      // solid-angle density; for a specular lobe, the probability of choosing it
-  bool specular = false;
+// What the simulator's surface texture says about a point (all in [0, 1]).
+struct SurfaceState {
+  float fog = 0;      // m_t / m_t^max, clamped
+  float wetting = 0;  // wetting history
 };
 
 class Material {
  public:
-  virtual ~Material() = default;
+  Material(const dp::io::Material& description, bool wet_paths);
 
-  // u_lobe picks among lobes (reflect or refract), u places the direction
-  // within one. Nothing when the path ends here (no lobe towards wi's side).
-  virtual std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Sample2 u) const = 0;
-  // The BSDF value f(wo, wi); zero for specular lobes, which only sampling finds.
-  virtual Rgb eval(Vec3 wo, Vec3 wi) const = 0;
-  // Solid-angle density with which sample() returns wi; zero for specular lobes.
-  virtual float pdf(Vec3 wo, Vec3 wi) const = 0;
-
+  Bsdf bsdf_at(SurfaceState state) const;
+  float roughness_at(SurfaceState state) const;
+  // Radiance leaving the front (outside) of an emissive surface.
+  Rgb emission() const { return emission_; }
+  bool emissive() const { return !is_black(emission_); }
   // Beer-Lambert absorption coefficient of the object's inside (1/m); zero
   // for opaque objects and clear media.
-  virtual Rgb absorption_per_m() const { return {}; }
+  Rgb absorption_per_m() const { return absorption_per_m_; }
+
+ private:
+  dp::io::MaterialType type_;
+  Rgb albedo_, eta_, k_;
+  float ior_;
+  float alpha_dry_, alpha_fogged_, alpha_wet_, wet_darkening_;
+  bool wet_paths_;
+  Rgb emission_, absorption_per_m_;
 };
 
 }  // namespace dp::render

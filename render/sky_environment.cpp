@@ -1,5 +1,8 @@
 #include "sky_environment.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace dp::render {
 
 SkyEnvironment::SkyEnvironment(const dp::io::EnvironmentSettings& s)
@@ -9,9 +12,12 @@ SkyEnvironment::SkyEnvironment(const dp::io::EnvironmentSettings& s)
 
 Rgb SkyEnvironment::radiance(Vec3 direction) const {
   if (direction.y < 0) return ground_;
-  // Blending by the sine of the elevation keeps the sky smooth and puts most
-  // of the change near the horizon, as in a clear sky.
   return lerp(horizon_, zenith_, direction.y);
+}
+
+EnvironmentSample SkyEnvironment::sample(Sample2 u) const {
+  const Vec3 d = sample_uniform_sphere(u);
+  return {d, radiance(d), kUniformSpherePdf};
 }
 
 }  // namespace dp::render

@@ -21,13 +21,6 @@ double kelvin_from_celsius(JsonObject& o, const std::string& key, double celsius
   return celsius_to_kelvin(celsius);
 }
 
-Rgb colour(JsonObject& o, const std::string& key, Rgb fallback) {
-  Rgb c = o.vec3(key, fallback);
-  for (double v : c)
-    if (v < 0) throw o.error(key, "expected non-negative colour components");
-  return c;
-}
-
 bool inside(const Vec3d& p, const Vec3d& lo, const Vec3d& hi) {
   for (int a = 0; a < 3; ++a)
     if (p[a] < lo[a] || p[a] > hi[a]) return false;
@@ -314,72 +307,10 @@ MeshSettings read_mesh(std::optional<JsonObject> o, const SimulationSettings& si
   return m;
 }
 
-Material read_material(JsonObject o) {
-  Material m;
-  std::string type = o.string("type");
-  if (type == "diffuse") m.type = MaterialType::Diffuse;
-  else if (type == "dielectric") m.type = MaterialType::Dielectric;
-  else if (type == "conductor") m.type = MaterialType::Conductor;
-  else throw o.error("type", "expected one of diffuse, dielectric, conductor; found '" + type + "'");
-  m.albedo = colour(o, "albedo", m.albedo);
-  for (double v : m.albedo)
-    if (v > 1) throw o.error("albedo", "expected components in [0, 1]");
-  m.ior = positive(o, "ior", o.number("ior", m.ior));
-  m.absorption_per_m = colour(o, "absorption_per_m", m.absorption_per_m);
-  o.finish();
-  return m;
-}
-
-RenderSettings read_render(JsonObject o, const SimulationSettings& sim) {
-  RenderSettings r;
-  auto res = o.int2("resolution");
-  if (res[0] <= 0 || res[1] <= 0) throw o.error("resolution", "expected two positive integers");
-  r.width = static_cast<int>(res[0]);
-  r.height = static_cast<int>(res[1]);
-  r.spp = static_cast<int>(o.integer("spp", r.spp));
-  if (r.spp <= 0) throw o.error("spp", "expected a positive integer");
-  r.max_depth = static_cast<int>(o.integer("max_depth", r.max_depth));
-  if (r.max_depth <= 0) throw o.error("max_depth", "expected a positive integer");
-  std::int64_t seed = o.integer("seed", 1);
-  if (seed < 0) throw o.error("seed", "expected a non-negative integer");
-  r.seed = static_cast<std::uint64_t>(seed);
-  r.exposure_stops = o.number("exposure_stops", 0);
-
-  JsonObject cam = o.object("camera");
-  r.camera.position_m = cam.vec3("position_m");
-  r.camera.look_at_m = cam.vec3("look_at_m");
-  r.camera.up = cam.vec3("up", r.camera.up);
-  r.camera.fov_deg = cam.number("fov_deg", r.camera.fov_deg);
-  if (!(r.camera.fov_deg > 0 && r.camera.fov_deg < 180)) throw cam.error("fov_deg", "expected a number in (0, 180)");
-  cam.finish();
-
-  if (auto env = o.optional_object("environment")) {
-    r.environment.zenith = colour(*env, "zenith_rgb", r.environment.zenith);
-    r.environment.horizon = colour(*env, "horizon_rgb", r.environment.horizon);
-    r.environment.ground = colour(*env, "ground_rgb", r.environment.ground);
-    r.environment.intensity = env->number("intensity", 1);
-    if (r.environment.intensity < 0) throw env->error("intensity", "expected a non-negative number");
-    env->finish();
-  }
-
-  for (auto& [name, m] : o.entries("materials")) r.materials[name] = read_material(m);
-  r.liquid_material = o.string("liquid_material", r.liquid_material);
-  if (!r.materials.count(r.liquid_material)) throw o.error("liquid_material", "names no entry of render.materials ('" + r.liquid_material + "')");
-
-  // Every rigid of the simulation appears in render.objects with a material.
-  for (auto& [name, obj] : o.entries("objects")) {
-    bool known = false;
-    for (const auto& rigid : sim.rigids) known = known || rigid.name == name;
-    if (!known) throw obj.error("material", "render.objects." + name + " names no rigid of simulation.rigids");
-    std::string material = obj.string("material");
-    if (!r.materials.count(material)) throw obj.error("material", "names no entry of render.materials ('" + material + "')");
-    obj.finish();
-    r.rigid_material[name] = material;
-  }
-  for (const auto& rigid : sim.rigids)
-    if (!r.rigid_material.count(rigid.name)) throw o.error("objects", "has no entry for rigid '" + rigid.name + "'");
-  o.finish();
-  return r;
+std::vector<std::string> rigid_names(const SimulationSettings& s) {
+  std::vector<std::string> names;
+  for (const RigidObject& rigid : s.rigids) names.push_back(rigid.name);
+  return names;
 }
 
 }  // namespace
@@ -398,7 +329,7 @@ Scene load_scene(const std::filesystem::path& file) {
   scene.name = top.string("name", scene.file.stem().string());
   scene.simulation = read_simulation(top.object("simulation"), scene.file.parent_path());
   scene.mesh = read_mesh(top.optional_object("mesh"), scene.simulation);
-  scene.render = read_render(top.object("render"), scene.simulation);
+  scene.render = read_render_settings(top.object("render"), rigid_names(scene.simulation), scene.file.parent_path());
   top.finish();
   return scene;
 }

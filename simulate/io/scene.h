@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "json_reader.h"
+#include "render_settings.h"
 
 namespace dp::io {
 
@@ -124,42 +125,6 @@ struct MeshSettings {
   double advancing_deg = 20;  // A_adv of Eq. 22, degrees per (m/s)^(1/3)
   double receding_deg = 20;   // A_rec of Eq. 22, degrees per (m/s)^(1/3)
   double correction_reach_factor = 1;  // correct where |xbar - xbar_p| < factor * rbar (the paper: 1)
-};
-
-enum class MaterialType { Diffuse, Dielectric, Conductor };
-
-struct Material {
-  MaterialType type = MaterialType::Diffuse;
-  Rgb albedo{0.8, 0.8, 0.8};        // diffuse reflectance, or conductor's colour
-  double ior = 1.33;                // dielectric
-  Rgb absorption_per_m{0, 0, 0};    // Beer-Lambert inside a dielectric
-};
-
-struct CameraSettings {
-  Vec3d position_m{0, 1, 2};
-  Vec3d look_at_m{0, 0, 0};
-  Vec3d up{0, 1, 0};
-  double fov_deg = 40;
-};
-
-struct EnvironmentSettings {
-  Rgb zenith{0.55, 0.7, 1.0};  // sky colour overhead
-  Rgb horizon{1.0, 1.0, 1.0};  // at the horizon
-  Rgb ground{0.25, 0.22, 0.2};
-  double intensity = 1.0;
-};
-
-struct RenderSettings {
-  int width = 480, height = 270;
-  int spp = 32;
-  int max_depth = 12;
-  std::uint64_t seed = 1;
-  double exposure_stops = 0;
-  CameraSettings camera;
-  EnvironmentSettings environment;
-  std::string liquid_material = "water";
-  std::map<std::string, Material> materials;          // by name
-  std::map<std::string, std::string> rigid_material;  // rigid name -> material name
 };
 
 struct Scene {

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "path_tracer.h"
+#include "sky_environment.h"
 #include "test_meshes.h"
 
 namespace dp::render {

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "fresnel.h"
-#include "smooth_dielectric.h"
+#include "dielectric_bsdf.h"
 
 namespace dp::render {
 namespace {
@@ -42,7 +42,7 @@ TEST(render_fresnel, BeyondTheCriticalAngleEverythingReflects) {
 TEST(render_fresnel, DielectricChoosesReflectionWithFresnelProbability) {
   const float n = 1.5f;
   const float r = std::pow((n - 1) / (n + 1), 2.0f);
-  const SmoothDielectric glass(n, {});
+  const DielectricBsdf glass(n, 0);
   const Vec3 wo{0, 0, 1};
 
   auto reflected = glass.sample(wo, 0.999f * r, {});
@@ -60,7 +60,7 @@ TEST(render_fresnel, DielectricChoosesReflectionWithFresnelProbability) {
 
 TEST(render_fresnel, RefractionObeysSnellsLaw) {
   const float n = 1.33f;
-  const SmoothDielectric water(n, {});
+  const DielectricBsdf water(n, 0);
   const float sin_incident = 0.6f;
   const Vec3 wo{sin_incident, 0, 0.8f};
   auto refracted = water.sample(wo, 0.999f, {});  // R at 37 degrees is far below 0.999
@@ -70,5 +70,41 @@ TEST(render_fresnel, RefractionObeysSnellsLaw) {
   EXPECT_NEAR(length(refracted->wi), 1.0f, 1e-6f);
 }
 
+// Conductors: at normal incidence R = ((n-1)² + k²) / ((n+1)² + k²)
+// (Born & Wolf, Sec. 14.2); with k = 0 the dielectric's equations; at
+// grazing incidence every surface reflects everything.
+TEST(render_fresnel, ConductorNormalIncidenceMatchesClosedForm) {
+  for (auto [n, k] : {std::pair{1.66f, 9.22f}, {0.2f, 3.0f}, {2.5f, 0.5f}}) {
+    const float expected = ((n - 1) * (n - 1) + k * k) / ((n + 1) * (n + 1) + k * k);
+    EXPECT_NEAR(fresnel_conductor(1, n, k), expected, 1e-5f) << n << " " << k;
+  }
+}
+
+TEST(render_fresnel, ConductorWithoutAbsorptionIsADielectric) {
+  for (float c : {1.0f, 0.8f, 0.5f, 0.2f, 0.05f})
+    EXPECT_NEAR(fresnel_conductor(c, 1.5f, 0), fresnel_dielectric(c, 1.5f).unpolarized(), 1e-5f) << "cos " << c;
+  EXPECT_NEAR(fresnel_conductor(0, 1.66f, 9.22f), 1.0f, 1e-5f);
+}
+
+// Veach 1997, Eq. 5.14: a BSDF for radiance obeys
+// f(wo <- wi) / eta_o² = f(wi <- wo) / eta_i², eta the index on each
+// direction's side; for reflection, plain symmetry.
+TEST(render_fresnel, RoughDielectricObeysGeneralisedReciprocity) {
+  const float ior = 1.33f;
+  const DielectricBsdf rough(ior, 0.4f);
+  int checked = 0;
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j) {
+      const float a = 0.07f * static_cast<float>(i), b = 0.08f * static_cast<float>(j);
+      const Vec3 wo = normalize(Vec3{std::sin(a), 0.3f, std::cos(a)});
+      const Vec3 wi = normalize(Vec3{std::sin(b) * std::cos(1.0f), std::sin(b) * std::sin(1.0f), std::cos(b)});
+      if (std::abs(wo.z) < 0.05f || std::abs(wi.z) < 0.05f) continue;
+      const float eta_o = wo.z > 0 ? 1 : ior, eta_i = wi.z > 0 ? 1 : ior;
+      const float forward = rough.eval(wo, wi).g / (eta_o * eta_o), backward = rough.eval(wi, wo).g / (eta_i * eta_i);
+      EXPECT_NEAR(forward, backward, 1e-4f * std::max(1.0f, forward)) << "wo.z " << wo.z << " wi.z " << wi.z;
+      checked += forward > 0;
+    }
+  EXPECT_GT(checked, 500);
+}
 }  // namespace
 }  // namespace dp::render

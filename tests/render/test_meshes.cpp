@@ -128,4 +128,35 @@ dp::io::PlyData liquid_ply(const dp::io::TriangleMesh& mesh) {
   return ply;
 }
 
+dp::io::TriangleMesh disk_facing_down(std::array<float, 3> c, float radius, int segments) {
+  dp::io::TriangleMesh mesh;
+  mesh.positions.push_back(c);
+  for (int i = 0; i < segments; ++i) {
+    const double a = 2 * 3.14159265358979 * i / segments;
+    mesh.positions.push_back({c[0] + radius * static_cast<float>(std::cos(a)), c[1], c[2] + radius * static_cast<float>(std::sin(a))});
+  }
+  for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(segments); ++i)
+    mesh.triangles.push_back({0, 1 + i, 1 + (i + 1) % static_cast<std::uint32_t>(segments)});
+  mesh.normals.assign(mesh.positions.size(), {0, -1, 0});
+  return mesh;
+}
+
+dp::io::TriangleMesh textured_square(float x0, float x1, float y0, float y1, float z0) {
+  dp::io::TriangleMesh mesh;
+  mesh.positions = {{x0, y0, z0}, {x1, y0, z0}, {x1, y1, z0}, {x0, y1, z0}};
+  mesh.normals.assign(4, {0, 0, 1});
+  mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return mesh;
+}
+
+dp::io::PlyData rigid_atlas_ply(const dp::io::TriangleMesh& mesh) {
+  dp::io::PlyData ply = liquid_ply(mesh);
+  std::vector<double> s, t;
+  for (const auto& uv : mesh.uvs) s.push_back(uv[0]), t.push_back(uv[1]);
+  ply.add("s", dp::io::PlyType::Float32, std::move(s));
+  ply.add("t", dp::io::PlyType::Float32, std::move(t));
+  return ply;
+}
+
 }  // namespace dp::render::test
