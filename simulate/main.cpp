@@ -13,6 +13,7 @@
 #include "scene.h"
 #include "simulation.h"
 #include "simulation_setup.h"
+#include "step_timings.h"
 #include "surface_frames.h"
 
 namespace fs = std::filesystem;
@@ -68,12 +69,21 @@ int run(const Options& opt) {
     dp::io::write_rigid_atlas_mesh(frames_dir / manifest.rigids.back().mesh_file, atlases[r].mesh, comment);
   }
 
+  // Table-1 timings of every step (docs/file-formats.md, stats folder).
+  const fs::path stats_dir = opt.out / "stats";
+  fs::create_directories(stats_dir);
+  dp::io::StepTimingsCsv timings(stats_dir / "timings.csv");
+  auto record_step = [&](const dp::StepReport& report) {
+    timings.add(dp::io::table1_row(report, simulation->step_count(), simulation->time()));
+  };
+
   const double frame_interval = 1.0 / sim.frame_rate_hz;
   dp::io::Progress progress("simulate " + scene.name, last_frame + 1, opt.quiet);
   for (int frame = 0; frame <= last_frame; ++frame) {
     // Frame times are independent of the step size: step until the frame's time.
     const double frame_time = frame * frame_interval;
-    simulation->advance_to(frame_time);
+    simulation->advance_to(frame_time, record_step);
+    timings.flush();
     if (!range.contains(frame)) continue;
     dp::ParticleSnapshot particles = simulation->particles();
     dp::io::FrameEntry entry;
@@ -114,6 +124,9 @@ int run(const Options& opt) {
     progress.update(frame + 1, line);
   }
   progress.finish(std::to_string(manifest.frames.size()) + " frames in " + frames_dir.string());
+  const dp::io::TimingSummary summary = timings.summary();
+  dp::io::write_timing_summary(stats_dir / "timings_summary.json", summary);
+  if (!opt.quiet) std::cout << dp::io::format_timing_summary(summary);
   return 0;
 }
 

@@ -3,6 +3,7 @@
 // a step, and snapshots of the state. Backends are hidden behind it.
 #include <cstdint>
 #include <memory>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -112,7 +113,9 @@ class Simulation {
   virtual ~Simulation() = default;
   virtual StepReport step() = 0;  // throws InstabilityError
   // Steps, shortening the last step so that time() lands on `time` exactly.
-  virtual void advance_to(double time) = 0;
+  // Steps until `time`; `on_step`, when given, sees each step's report
+  // (for the per-step timing table).
+  virtual void advance_to(double time, const std::function<void(const StepReport&)>& on_step = {}) = 0;
   virtual ParticleSnapshot particles() const = 0;
   virtual std::vector<Vec3> rigid_particles() const = 0;
   virtual std::vector<float> rigid_volumes() const = 0;

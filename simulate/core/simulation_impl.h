@@ -108,13 +108,14 @@ class SimulationImpl final : public Simulation {
 
   StepReport step() override { return step_with(next_time_step()); }
 
-  void advance_to(double time) override {
+  void advance_to(double time, const std::function<void(const StepReport&)>& on_step) override {
     // Steps end on frame times exactly; a remainder below a nanosecond is
     // rounding of earlier steps, not a step.
     while (time - time_ > 1e-9) {
       float dt = next_time_step();
       if (time_ + dt > time - 1e-9) dt = static_cast<float>(time - time_);
-      step_with(dt);
+      const StepReport& report = step_with(dt);
+      if (on_step) on_step(report);
     }
   }
 

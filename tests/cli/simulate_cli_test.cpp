@@ -4,6 +4,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -86,6 +87,37 @@ TEST_F(SimulateCli, WritesFramesAndManifest) {
   EXPECT_FALSE(atlas.faces.empty());
   for (const auto& f : m.frames) EXPECT_TRUE(fs::exists(work_ / "out/frames" / f.surface_files.at("tray")));
   EXPECT_EQ(m.frames[2].surface_files.at("tray"), "surface_tray.0002.exr");
+}
+
+TEST_F(SimulateCli, WritesOneTimingRowPerStepAndTheirSummary) {
+  fs::path scene = write_scene();
+  auto r = simulate(scene.string() + " -o " + (work_ / "out").string() + " --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  io::FramesManifest m = io::read_manifest(work_ / "out/frames");
+  std::ifstream csv(work_ / "out/stats/timings.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("step,time_s,dt_ms,ptcl_ms,grid_ms,neigh_ms,heat_ms,eva_ms", 0), 0u) << header;
+  std::int64_t rows = 0;
+  double sum_dt_ms = 0, max_ptcl = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    std::vector<double> v;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 11u) << line;
+    EXPECT_EQ(v[0], static_cast<double>(rows)) << "steps numbered from 1";
+    sum_dt_ms += v[2];
+    max_ptcl = std::max(max_ptcl, v[3]);
+  }
+  // One row per step, and the steps' dtau add up to the last frame's time.
+  EXPECT_EQ(rows, m.frames.back().step);
+  EXPECT_NEAR(sum_dt_ms * 1e-3, m.frames.back().time_s, 1e-6);
+  std::ifstream in(work_ / "out/stats/timings_summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["steps"].get<std::int64_t>(), rows);
+  EXPECT_NEAR(summary["columns"]["Ptcl"]["max"].get<double>(), max_ptcl, 1e-5 * max_ptcl);  // the CSV keeps 6 digits
+  EXPECT_NE(r.output.find("Neigh"), std::string::npos) << "the summary table is printed";
 }
 
 TEST_F(SimulateCli, FrameRangeWritesOnlyThoseFrames) {
