@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "air/air_grid.h"
+#include "coupling/air_coupling.h"
 #include "simulation.h"
 #include "sph/adaptivity_winchenbach2017_driver.h"
 #include "sph/boundary_akinci2012.h"
@@ -103,7 +104,11 @@ class SimulationImpl final : public Simulation {
     surfaces_.prepare(exec_, setup, rigid_grid_.view(rigid_position_), rigid_grid_.order, rigid_volume_, rigid_temperature_);
     area_calibration_ = flat_face_area_calibration(kernel_, setup.particle_spacing);
     heat_dt_limit_ = heat_time_step_limit_of(setup);
-    if (setup.air) air_.emplace(exec_, *setup.air, setup.gravity, rigid_grid_.view(rigid_position_));
+    if (setup.air) {
+      air_.emplace(exec_, *setup.air, setup.gravity, rigid_grid_.view(rigid_position_));
+      coupling_.prepare(exec_, setup.coupling, *air_, rigid_position_, surfaces_);
+    }
+    initial_water_ = water_ledger();
   }
 
   StepReport step() override { return step_with(next_time_step()); }
@@ -143,6 +148,26 @@ class SimulationImpl final : public Simulation {
   std::optional<AirSnapshot> air() const override {
     if (!air_) return std::nullopt;
     return air_->snapshot();
+  }
+  WaterLedger water_ledger() const override {
+    WaterLedger l;
+    std::uint64_t units = 0;  // exact: 2^24 per particle, far from 2^64
+    for (MassUnits u : Exec::download(liquid_.units)) units += u;
+    l.liquid_kg = static_cast<double>(units) * (static_cast<double>(particle_mass_) / kFullParticleUnits);
+    for (const SurfaceSnapshot& s : surfaces_.snapshots()) l.texel_kg += s.total_mass().kg(s.kg_per_unit);
+    l.initial_kg = initial_water_.total_kg();
+    if (air_) {
+      const AirLedger& a = air_->ledger();
+      l.vapor_kg = air_->vapor_mass(exec_);
+      l.inflow_gain_kg = a.inflow_gain;
+      l.open_in_kg = a.open_in;
+      l.open_out_kg = a.open_out;
+      const double k = surfaces_.kg_per_unit();
+      l.liquid_to_air_kg = static_cast<double>(coupling_.liquid_to_air_units()) * k;
+      l.texels_to_air_kg = static_cast<double>(coupling_.texels_to_air_units()) * k;
+    }
+    if (steps_ == 0 && l.initial_kg == 0) l.initial_kg = l.total_kg();
+    return l;
   }
 
  private:
@@ -314,6 +339,7 @@ class SimulationImpl final : public Simulation {
     exec_.synchronize();
     report.seconds_other = other + seconds_since(t3);
     step_air(dt, report);  // Alg. 1 Phase 2
+    couple(dt, report);    // Alg. 1 Phase 3
     report_ = report;
     return report;
   }
@@ -327,6 +353,37 @@ class SimulationImpl final : public Simulation {
     report.air = air_->step(exec_, dt);
     exec_.synchronize();
     report.seconds_grid = seconds_since(t);
+  }
+
+  // Alg. 1 lines 12-16, the air's side of Phase 3 (texel temperatures,
+  // line 14, run with the particles' heat). Lines 17 (emission) and 19 (path
+  // force) are not implemented yet; line 18 runs at the start of the next
+  // step (adapt_masses), removing particles that evaporated completely.
+  void couple(float dt, StepReport& report) {
+    if (!air_) return;
+    auto t = Clock::now();
+    coupling_.find_neighbours(exec_, *air_, liquid_.position);  // line 12
+    exec_.synchronize();
+    report.seconds_neighbours += seconds_since(t);
+    t = Clock::now();
+    const LiquidMaterial& l = setup_.liquid;
+    const RigidMaterial& r = setup_.rigid;
+    const float spacing = setup_.particle_spacing;
+    const HeatSurfels liquid{Exec::ptr(surface_area_), 0.0f, Exec::ptr(liquid_.units), nullptr, particle_mass_, l.specific_heat,
+                             l.conductivity, nullptr, Exec::ptr(liquid_.id), Exec::ptr(liquid_.temperature)};
+    // A boundary particle stands for one spacing squared of the rigid's surface.
+    const HeatSurfels rigid{nullptr, spacing * spacing, nullptr, Exec::ptr(rigid_volume_), r.density, r.specific_heat, r.conductivity,
+                            Exec::ptr(rigid_held_), nullptr, Exec::ptr(rigid_temperature_)};
+    coupling_.exchange_heat(exec_, *air_, liquid, rigid, dt, static_cast<std::uint64_t>(steps_));  // line 13
+    exec_.synchronize();
+    report.seconds_heat += seconds_since(t);
+    t = Clock::now();
+    const double unit_kg = kg_per_texel_unit(particle_mass_);
+    coupling_.evaporate_particles(exec_, *air_, liquid_.position, surface_area_, liquid_.temperature, liquid_.id, liquid_.units,
+                                  unit_kg, dt, static_cast<std::uint64_t>(steps_));  // line 15
+    coupling_.exchange_texels(exec_, *air_, surfaces_, dt);                                       // line 16
+    exec_.synchronize();
+    report.seconds_evaporation = seconds_since(t);
   }
 
   // PCISPH: predict, correct pressures until the average density error is
@@ -447,6 +504,8 @@ class SimulationImpl final : public Simulation {
   StepReport report_;
   SurfaceTextures<Exec> surfaces_;
   std::optional<AirGrid<Exec>> air_;
+  AirCoupling<Exec> coupling_;
+  WaterLedger initial_water_;
 };
 
 }  // namespace dp

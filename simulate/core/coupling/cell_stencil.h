@@ -53,15 +53,26 @@ struct ComputeStencils {
   DP_HD void operator()(std::size_t s) const { trilinear_stencil(grid, position[s], pair_cell + kStencilSize * s, pair_alpha + kStencilSize * s); }
 };
 
-// Only cells that carry air hold vapor and exchange it; a surfel's weights
-// are renormalised over those (0 when none of its eight does).
-DP_HD inline float air_weights(const std::uint8_t* kind, const std::uint32_t* cell, const float* alpha, float* w) {
+// Surfels exchange with the air cells of their stencil, weights
+// renormalised over those. A surfel with no air cell among its eight (with
+// cells wider than two support radii, Sec. 4.2, a small drop can lie wholly
+// inside liquid cells) exchanges with its liquid cells instead, whose vapor
+// and heat stay in place while the cell is a wall for the air and move on
+// once it is air again. Rigid cells never exchange. Returns the weights' sum
+// (0: no cell to exchange with).
+DP_HD inline float stencil_weights(const std::uint8_t* kind, const std::uint32_t* cell, const float* alpha, float* w, bool liquid_too) {
   float sum = 0;
   for (int k = 0; k < kStencilSize; ++k) {
-    w[k] = carries_air(kind[cell[k]]) ? alpha[k] : 0.0f;
+    const std::uint8_t c = kind[cell[k]];
+    w[k] = (carries_air(c) || (liquid_too && c == kLiquidCell)) ? alpha[k] : 0.0f;
     sum += w[k];
   }
   return sum;
+}
+
+DP_HD inline float air_weights(const std::uint8_t* kind, const std::uint32_t* cell, const float* alpha, float* w) {
+  const float sum = stencil_weights(kind, cell, alpha, w, false);
+  return sum > 0 ? sum : stencil_weights(kind, cell, alpha, w, true);
 }
 
 // First pair of each cell in the pairs sorted by cell (binary search), so

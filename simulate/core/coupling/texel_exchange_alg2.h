@@ -162,7 +162,7 @@ struct UpdateCellVapor {
     TexelMassUnits in = 0, out = 0;
     for (std::uint32_t q = offset[c]; q < offset[c + 1]; ++q) {
       in += pair_eva[sorted_pair[q]];
-      out += pair_cond[sorted_pair[q]];
+      out += pair_cond ? pair_cond[sorted_pair[q]] : 0;  // null: evaporation only (particles)
     }
     const std::int64_t net = static_cast<std::int64_t>(in) - static_cast<std::int64_t>(out);
     net_units[c] = net;
