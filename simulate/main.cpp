@@ -102,7 +102,8 @@ int run(const Options& opt) {
                    {"vapor_kg", w.vapor_kg},           {"initial_kg", w.initial_kg},
                    {"inflow_gain_kg", w.inflow_gain_kg}, {"open_in_kg", w.open_in_kg},
                    {"open_out_kg", w.open_out_kg},     {"liquid_to_air_kg", w.liquid_to_air_kg},
-                   {"texels_to_air_kg", w.texels_to_air_kg}, {"drift_kg", w.drift_kg()},
+                   {"texels_to_air_kg", w.texels_to_air_kg}, {"texels_to_liquid_kg", w.texels_to_liquid_kg},
+                   {"drift_kg", w.drift_kg()},
                    {"relative_drift", w.relative_drift()}};
     manifest.frames.push_back(entry);
     dp::io::write_manifest(frames_dir, manifest);

@@ -8,6 +8,7 @@
 
 #include "air/air_grid.h"
 #include "coupling/air_coupling.h"
+#include "coupling/emission_texels_to_particles.h"
 #include "simulation.h"
 #include "sph/adaptivity_winchenbach2017_driver.h"
 #include "sph/boundary_akinci2012.h"
@@ -94,6 +95,7 @@ class SimulationImpl final : public Simulation {
     Exec::upload(liquid_.position, setup.liquid_position);
     Exec::upload(liquid_.velocity, setup.liquid_velocity);
     Exec::upload(liquid_.id, ids);
+    next_id_ = static_cast<std::uint32_t>(n);
     Exec::upload(liquid_.units, setup.liquid_units.size() == n ? setup.liquid_units
                                                                : std::vector<MassUnits>(n, kFullParticleUnits));
     liquid_.extra_count = 0;
@@ -166,6 +168,7 @@ class SimulationImpl final : public Simulation {
       l.liquid_to_air_kg = static_cast<double>(coupling_.liquid_to_air_units()) * k;
       l.texels_to_air_kg = static_cast<double>(coupling_.texels_to_air_units()) * k;
     }
+    l.texels_to_liquid_kg = static_cast<double>(emitted_particles_) * particle_mass_;
     if (steps_ == 0 && l.initial_kg == 0) l.initial_kg = l.total_kg();
     return l;
   }
@@ -339,7 +342,8 @@ class SimulationImpl final : public Simulation {
     exec_.synchronize();
     report.seconds_other = other + seconds_since(t3);
     step_air(dt, report);  // Alg. 1 Phase 2
-    couple(dt, report);    // Alg. 1 Phase 3
+    couple(dt, report);    // Alg. 1 Phase 3, lines 12-16
+    emit_particles();      // line 17
     report_ = report;
     return report;
   }
@@ -356,9 +360,9 @@ class SimulationImpl final : public Simulation {
   }
 
   // Alg. 1 lines 12-16, the air's side of Phase 3 (texel temperatures,
-  // line 14, run with the particles' heat). Lines 17 (emission) and 19 (path
-  // force) are not implemented yet; line 18 runs at the start of the next
-  // step (adapt_masses), removing particles that evaporated completely.
+  // line 14, run with the particles' heat). Line 17 is emit_particles; line
+  // 18 runs at the start of the next step (adapt_masses), removing particles
+  // that evaporated completely; line 19 (path force) is not implemented.
   void couple(float dt, StepReport& report) {
     if (!air_) return;
     auto t = Clock::now();
@@ -384,6 +388,47 @@ class SimulationImpl final : public Simulation {
     coupling_.exchange_texels(exec_, *air_, surfaces_, dt);                                       // line 16
     exec_.synchronize();
     report.seconds_evaporation = seconds_since(t);
+  }
+
+  // Alg. 1 line 17 (Sec. 6.2): seeds whose texels hold a particle's mass
+  // emit one. Emission is rare, so the new particles are appended on the
+  // host, and only in steps where some seed emitted.
+  void emit_particles() {
+    if (!setup_.coupling.particle_emission) return;
+    for (std::size_t r = 0; r < surfaces_.count(); ++r) {
+      auto& tex = surfaces_.texture(r);
+      const std::size_t seeds = tex.seeds.size();
+      if (seeds == 0) continue;
+      emitted_.resize(seeds);
+      seed_temperature_.resize(seeds);
+      exec_.parallel_for(seeds, EmitFromSeeds{Exec::ptr(tex.seed_texel_offset), Exec::ptr(tex.seed_texel_index), Exec::ptr(tex.wetting),
+                                              Exec::ptr(tex.temperature), setup_.coupling.wet_threshold, Exec::ptr(tex.mass),
+                                              Exec::ptr(emitted_), Exec::ptr(seed_temperature_)});
+      if (exec_.find_first(seeds, IsSet{Exec::ptr(emitted_)}) == seeds) continue;
+      append_emitted(tex.seeds, Exec::download(emitted_), Exec::download(seed_temperature_));
+    }
+  }
+
+  void append_emitted(const SeedingPoints& seeds, const std::vector<std::uint8_t>& emitted, const std::vector<float>& temperature) {
+    std::vector<Vec3> x = Exec::download(liquid_.position), v = Exec::download(liquid_.velocity);
+    std::vector<float> t = Exec::download(liquid_.temperature);
+    std::vector<MassUnits> u = Exec::download(liquid_.units);
+    std::vector<std::uint32_t> id = Exec::download(liquid_.id);
+    for (std::size_t s = 0; s < emitted.size(); ++s) {
+      if (!emitted[s]) continue;
+      x.push_back(seeds.position[s] + setup_.particle_spacing * seeds.normal[s]);
+      v.push_back(Vec3{0, 0, 0});
+      t.push_back(temperature[s]);
+      u.push_back(kFullParticleUnits);
+      id.push_back(next_id_++);
+      ++emitted_particles_;
+    }
+    Exec::upload(liquid_.position, x);
+    Exec::upload(liquid_.velocity, v);
+    Exec::upload(liquid_.temperature, t);
+    Exec::upload(liquid_.units, u);
+    Exec::upload(liquid_.id, id);
+    resize_scratch(x.size());
   }
 
   // PCISPH: predict, correct pressures until the average density error is
@@ -506,6 +551,10 @@ class SimulationImpl final : public Simulation {
   std::optional<AirGrid<Exec>> air_;
   AirCoupling<Exec> coupling_;
   WaterLedger initial_water_;
+  Buffer<std::uint8_t> emitted_;
+  Buffer<float> seed_temperature_;
+  std::uint32_t next_id_ = 0;           // for emitted particles
+  std::uint64_t emitted_particles_ = 0;
 };
 
 }  // namespace dp

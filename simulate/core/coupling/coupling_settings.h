@@ -12,6 +12,7 @@ struct CouplingSettings {
   bool heat_exchange = true;             // Alg. 1 line 13
   bool particle_evaporation = true;      // line 15
   bool texel_exchange = true;            // line 16
+  bool particle_emission = true;         // line 17: texels -> particles
   // Texels with a wetting history at or above this do not condense (Sec. 6.2).
   float wet_threshold = 0.36787944f;
 };

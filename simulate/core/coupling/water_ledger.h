@@ -18,6 +18,7 @@ struct WaterLedger {
   double inflow_gain_kg = 0;  // vapor set by inflow cells (may be negative)
   double open_in_kg = 0, open_out_kg = 0;  // vapor through open domain faces
   double liquid_to_air_kg = 0, texels_to_air_kg = 0;  // exchanged so far (exact units, shown in kg)
+  double texels_to_liquid_kg = 0;                      // emitted particles (Sec. 6.2)
 
   double total_kg() const { return liquid_kg + texel_kg + vapor_kg; }
   double expected_kg() const { return initial_kg + inflow_gain_kg + open_in_kg - open_out_kg; }
