@@ -127,7 +127,9 @@ Figures run(const Options& o, bool coupled) {
     grid.push_back(1e3 * r.seconds_grid);
   }
   const dp::WaterLedger l = sim->water_ledger();
-  std::printf("  %s: ledger relative drift %.2e after %d steps\n", coupled ? "coupled" : "uncoupled", l.relative_drift(), o.steps + 1);
+  std::printf("  %s: %d steps, liquid -> air %.3e kg, texels -> air %.3e kg, emitted %.3e kg, ledger drift %.2e kg (%.2e relative)\n",
+              coupled ? "coupled" : "uncoupled", o.steps + 1, l.liquid_to_air_kg, l.texels_to_air_kg, l.texels_to_liquid_kg,
+              l.drift_kg(), l.relative_drift());
   return Figures{median(neigh), median(heat), median(eva), median(grid)};
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "air/air_grid.h"
+#include "air/vorticity_confinement_fedkiw2001.h"
 #include "coupling/cell_stencil.h"
 #include "coupling/coupling_settings.h"
 #include "coupling/heat_grid_particles.h"
@@ -37,6 +38,7 @@ class AirCoupling {
     texels_.resize(surfaces.count());
     for (std::size_t i = 0; i < surfaces.count(); ++i) texels_[i].prepare(exec, g, surfaces.texture(i).position);
     temperature_change_.resize(g.cell_count());
+    cell_velocity_.resize(g.cell_count());
     net_units_.resize(g.cell_count());
     vapor_kg_.resize(g.cell_count());
   }
@@ -70,7 +72,8 @@ class AirCoupling {
                            const Buffer<float>& temperature, const Buffer<std::uint32_t>& id, Buffer<MassUnits>& units,
                            double kg_per_unit, float dt, std::uint64_t step) {
     if (!settings_.particle_evaporation || liquid_.size == 0) return;
-    exec.parallel_for(liquid_.size, EvaporateParticles{air.view(), Exec::ptr(position), Exec::ptr(liquid_.pair_cell),
+    find_cell_velocity(exec, air);
+    exec.parallel_for(liquid_.size, EvaporateParticles{air.view(), Exec::ptr(cell_velocity_), Exec::ptr(liquid_.pair_cell),
                                                        Exec::ptr(liquid_.pair_alpha), Exec::ptr(area), Exec::ptr(temperature),
                                                        Exec::ptr(id), settings_.coefficients, dt, kg_per_unit, step,
                                                        Exec::ptr(units), Exec::ptr(liquid_.pair_eva)});
@@ -90,11 +93,12 @@ class AirCoupling {
     p.dt = dt;
     p.kg_per_unit = surfaces.kg_per_unit();
     p.wet_threshold = settings_.wet_threshold;
+    if (!texels_.empty()) find_cell_velocity(exec, air);
     for (std::size_t i = 0; i < texels_.size(); ++i) {
       auto& t = surfaces.texture(i);
       const TexelExchangeView view{Exec::ptr(t.position), Exec::ptr(t.area), Exec::ptr(t.temperature), Exec::ptr(t.wetting),
                                    Exec::ptr(t.max_mass), Exec::ptr(t.mass)};
-      texels_to_air_ += texels_[i].exchange(exec, view, air, p);
+      texels_to_air_ += texels_[i].exchange(exec, view, air, Exec::ptr(cell_velocity_), p);
     }
   }
 
@@ -102,6 +106,11 @@ class AirCoupling {
   Units texels_to_air_units() const { return texels_to_air_; }
 
  private:
+  void find_cell_velocity(const Exec& exec, const AirGrid<Exec>& air) {
+    const AirCellsView v = air.view();
+    exec.parallel_for(air.grid().cell_count(), CellCentredVelocity{air.grid(), v.u, v.v, v.w, Exec::ptr(cell_velocity_)});
+  }
+
   // One particle set's stencils, its pairs' transfers and the cells' index.
   struct ParticleStencils {
     std::size_t size = 0;
@@ -131,6 +140,7 @@ class AirCoupling {
   ParticleStencils liquid_, rigid_;
   std::vector<TexelVaporExchange<Exec>> texels_;
   Buffer<float> temperature_change_;
+  Buffer<Vec3> cell_velocity_;
   Buffer<std::int64_t> net_units_;
   Buffer<double> vapor_kg_;
   Units liquid_to_air_ = 0, texels_to_air_ = 0;

@@ -22,13 +22,14 @@
 #include "coupling/evaporation_rate_smith1994.h"
 #include "coupling/exact_units.h"
 #include "coupling/stochastic_rounding.h"
+#include "coupling/texel_exchange_alg2.h"
 #include "sph/mass_units.h"
 
 namespace dp {
 
 struct EvaporateParticles {
   AirCellsView air;
-  const Vec3* position;
+  const Vec3* cell_velocity;  // cell-centred, this step
   const std::uint32_t* pair_cell;
   const float* pair_alpha;
   const float* area;         // A_i (Orthmann-style estimate, sph/surface_area_orthmann2013.h)
@@ -48,12 +49,8 @@ struct EvaporateParticles {
     const float wsum = air_weights(air.kind, cell, pair_alpha + kStencilSize * i, w);
     TexelMassUnits estimate = 0;
     if (wsum > 0 && area[i] > 0) {
-      double rho = 0, excess = 0;
-      for (int k = 0; k < kStencilSize; ++k) {
-        rho += static_cast<double>(w[k]) * air.vapor[cell[k]];
-        excess += static_cast<double>(w[k]) * air.temperature_excess[cell[k]];
-      }
-      const AirAtSurfel a{rho / wsum, air.ambient_temperature + excess / wsum, static_cast<double>(length(air.velocity_at(position[i])))};
+      AirAtSurfel a = air_at_stencil(air, cell, w, wsum);
+      air_speed_if_needed(cell_velocity, cell, w, wsum, coefficients.b, temperature[i], units[i] > 0, a);
       estimate = transfer_units_of_kg(evaporation_rate(area[i], coefficients, temperature[i], a) * dt, kg_per_unit);  // Eq. 16
     }
     // Whole mass units, stochastically rounded, at most what the particle has (w^eva).

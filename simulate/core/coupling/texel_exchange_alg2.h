@@ -40,14 +40,27 @@ struct ExchangeParameters {
   float wet_threshold = 0.36787944f;  // e^-1
 };
 
-// What the air is at x, from the air-carrying cells of its stencil.
-DP_HD inline AirAtSurfel air_at_stencil(const AirCellsView& air, Vec3 x, const std::uint32_t* cell, const float* w, float wsum) {
+// What the air is at a surfel, from the cells of its stencil; the speed is
+// left 0 (it is sampled only where it matters, see air_speed_if_needed).
+DP_HD inline AirAtSurfel air_at_stencil(const AirCellsView& air, const std::uint32_t* cell, const float* w, float wsum) {
   double rho = 0, excess = 0;
   for (int k = 0; k < kStencilSize; ++k) {
     rho += static_cast<double>(w[k]) * air.vapor[cell[k]];
     excess += static_cast<double>(w[k]) * air.temperature_excess[cell[k]];
   }
-  return AirAtSurfel{rho / wsum, air.ambient_temperature + excess / wsum, static_cast<double>(length(air.velocity_at(x)))};
+  return AirAtSurfel{rho / wsum, air.ambient_temperature + excess / wsum, 0.0};
+}
+
+// The air speed enters Eq. 12 only through b, and only for evaporation
+// (Eq. 17 drops it) from a surfel that has water. It is the trilinear
+// interpolation of the cell-centred velocities (as for the other cell
+// quantities, Sec. 6.1) over the surfel's stencil weights.
+DP_HD inline void air_speed_if_needed(const Vec3* cell_velocity, const std::uint32_t* cell, const float* w, float wsum, double b,
+                                      double surface_kelvin, bool has_water, AirAtSurfel& a) {
+  if (!(b > 0 && has_water && saturation_pressure_at_kelvin(surface_kelvin) > vapor_pressure(a.vapor_density, a.temperature))) return;
+  Vec3 v{0, 0, 0};
+  for (int k = 0; k < kStencilSize; ++k) v = v + w[k] * cell_velocity[cell[k]];
+  a.speed = static_cast<double>(length(v)) / wsum;
 }
 
 // Alg. 2 lines 1-14 for texel t: eva and cond per pair, already scaled by
@@ -55,6 +68,7 @@ DP_HD inline AirAtSurfel air_at_stencil(const AirCellsView& air, Vec3 x, const s
 struct EstimateTexelExchange {
   TexelExchangeView texel;
   AirCellsView air;
+  const Vec3* cell_velocity;  // cell-centred, this step
   const std::uint32_t* pair_cell;
   const float* pair_alpha;
   ExchangeParameters p;
@@ -69,7 +83,8 @@ struct EstimateTexelExchange {
     const float wsum = air_weights(air.kind, cell, pair_alpha + kStencilSize * t, w);
     double eva_kg = 0, cond_kg = 0;
     if (wsum > 0) {
-      const AirAtSurfel a = air_at_stencil(air, texel.position[t], cell, w, wsum);
+      AirAtSurfel a = air_at_stencil(air, cell, w, wsum);
+      air_speed_if_needed(cell_velocity, cell, w, wsum, p.coefficients.b, texel.temperature[t], texel.mass[t] > 0, a);
       eva_kg = evaporation_rate(texel.area[t], p.coefficients, texel.temperature[t], a) * p.dt;  // Eq. 16
       if (texel.wetting[t] < p.wet_threshold)
         cond_kg = condensation_rate(texel.area[t], p.coefficients, texel.temperature[t], a) * p.dt;  // Eq. 17

@@ -33,12 +33,14 @@ class TexelVaporExchange {
   }
 
   // One step of Alg. 2; returns the units the air gained (negative: lost).
-  std::int64_t exchange(const Exec& exec, const TexelExchangeView& texel, AirGrid<Exec>& air, const ExchangeParameters& p) {
+  // `cell_velocity`: the cell-centred air velocity of this step.
+  std::int64_t exchange(const Exec& exec, const TexelExchangeView& texel, AirGrid<Exec>& air, const Vec3* cell_velocity,
+                        const ExchangeParameters& p) {
     if (texels_ == 0) return 0;
     const MacGrid& g = air.grid();
     const std::size_t cells = g.cell_count();
     const AirCellsView view = air.view();
-    exec.parallel_for(texels_, EstimateTexelExchange{texel, view, Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_), p,
+    exec.parallel_for(texels_, EstimateTexelExchange{texel, view, cell_velocity, Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_), p,
                                                      Exec::ptr(pair_eva_), Exec::ptr(pair_cond_)});
     exec.parallel_for(cells, BalanceCellCondensation{Exec::ptr(cells_.offset), Exec::ptr(cells_.sorted_pair), Exec::ptr(pair_eva_),
                                                      Exec::ptr(pair_cond_), view.vapor, static_cast<double>(g.cell_volume()),

@@ -23,7 +23,8 @@ TEST(coupling_ParticleEvaporation, ASpentParticleGivesTheAirExactlyWhatItHad) {
   exec.parallel_for(2, ComputeStencils{air.grid(), position.data(), cell.data(), alpha.data()});
   EvaporationCoefficients k;
   const double unit = kg_per_texel_unit(test::kTestParticleMass);
-  exec.parallel_for(2, EvaporateParticles{air.view(), position.data(), cell.data(), alpha.data(), area.data(), temperature.data(),
+  std::vector<Vec3> still(air.grid().cell_count(), Vec3{0, 0, 0});
+  exec.parallel_for(2, EvaporateParticles{air.view(), still.data(), cell.data(), alpha.data(), area.data(), temperature.data(),
                                           id.data(), k, 0.01f, unit, 0, units.data(), eva.data()});
   EXPECT_EQ(units[0], 0u);  // 10 units (6e-10 kg) against 8.7e-10 kg of Eq. 16 at 90 degC
   TexelMassUnits given = 0;

@@ -53,7 +53,12 @@ struct TexelBox {
   // Alg. 2 only.
   void exchange_step(float dt) {
     params.dt = dt;
-    air_units += exchange.exchange(exec, view(), air, params);
+    const AirSnapshot a = air.snapshot();
+    std::vector<Vec3> v(a.vapor.size());
+    for (int k = 0; k < a.grid.nz; ++k)
+      for (int j = 0; j < a.grid.ny; ++j)
+        for (int i = 0; i < a.grid.nx; ++i) v[a.grid.cell(i, j, k)] = a.cell_velocity(i, j, k);
+    air_units += exchange.exchange(exec, view(), air, v.data(), params);
   }
   // Alg. 2, then the air carries the vapor away.
   void step(float dt) {
