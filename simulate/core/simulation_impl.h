@@ -383,7 +383,7 @@ class SimulationImpl final : public Simulation {
     report.seconds_heat += seconds_since(t);
     t = Clock::now();
     const double unit_kg = kg_per_texel_unit(particle_mass_);
-    coupling_.evaporate_particles(exec_, *air_, liquid_.position, surface_area_, liquid_.temperature, liquid_.id, liquid_.units,
+    coupling_.evaporate_particles(exec_, *air_, surface_area_, liquid_.temperature, liquid_.id, liquid_.units, l.specific_heat,
                                   unit_kg, dt, static_cast<std::uint64_t>(steps_));  // line 15
     coupling_.exchange_texels(exec_, *air_, surfaces_, dt);                                       // line 16
     exec_.synchronize();

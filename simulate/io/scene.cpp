@@ -132,6 +132,8 @@ CouplingSectionSettings read_coupling(JsonObject o) {
   c.particle_evaporation = o.boolean("particle_evaporation", c.particle_evaporation);
   c.texel_exchange = o.boolean("texel_exchange", c.texel_exchange);
   c.particle_emission = o.boolean("particle_emission", c.particle_emission);
+  c.latent_heat = o.boolean("latent_heat", c.latent_heat);
+  c.latent_heat_j_kg = positive(o, "latent_heat_j_kg", o.number("latent_heat_j_kg", c.latent_heat_j_kg));
   c.air_density_kg_m3 = positive(o, "air_density_kg_m3", o.number("air_density_kg_m3", c.air_density_kg_m3));
   c.air_specific_heat_j_kgk = positive(o, "air_specific_heat_j_kgk", o.number("air_specific_heat_j_kgk", c.air_specific_heat_j_kgk));
   c.air_conductivity_w_mk = o.number("air_conductivity_w_mk", c.air_conductivity_w_mk);

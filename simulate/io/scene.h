@@ -85,6 +85,8 @@ struct CouplingSectionSettings {
   double evaporation_a = 30.6e-3 / 2.45e6;  // kg/(m^2 s Pa), Eq. 12's a
   double evaporation_b = 32.1e-3 / 2.45e6;  // kg/(m^3 Pa), Eq. 12's b
   bool heat_exchange = true, particle_evaporation = true, texel_exchange = true, particle_emission = true;
+  bool latent_heat = false;
+  double latent_heat_j_kg = 2.26e6;
   double air_density_kg_m3 = 1.204, air_specific_heat_j_kgk = 1005, air_conductivity_w_mk = 0.0257;
 };
 

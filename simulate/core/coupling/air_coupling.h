@@ -68,15 +68,16 @@ class AirCoupling {
   }
 
   // Alg. 1 line 15: particles -> cells; `units` lose what the air gains.
-  void evaporate_particles(const Exec& exec, AirGrid<Exec>& air, const Buffer<Vec3>& position, const Buffer<float>& area,
-                           const Buffer<float>& temperature, const Buffer<std::uint32_t>& id, Buffer<MassUnits>& units,
-                           double kg_per_unit, float dt, std::uint64_t step) {
+  void evaporate_particles(const Exec& exec, AirGrid<Exec>& air, const Buffer<float>& area, Buffer<float>& temperature,
+                           const Buffer<std::uint32_t>& id, Buffer<MassUnits>& units, float specific_heat, double kg_per_unit,
+                           float dt, std::uint64_t step) {
     if (!settings_.particle_evaporation || liquid_.size == 0) return;
     find_cell_velocity(exec, air);
     exec.parallel_for(liquid_.size, EvaporateParticles{air.view(), Exec::ptr(cell_velocity_), Exec::ptr(liquid_.pair_cell),
                                                        Exec::ptr(liquid_.pair_alpha), Exec::ptr(area), Exec::ptr(temperature),
                                                        Exec::ptr(id), settings_.coefficients, dt, kg_per_unit, step,
-                                                       Exec::ptr(units), Exec::ptr(liquid_.pair_eva)});
+                                                       Exec::ptr(units), Exec::ptr(liquid_.pair_eva),
+                                                       settings_.latent_heat ? settings_.latent_heat_j_kg / specific_heat : 0.0f});
     const std::size_t cells = air.grid().cell_count();
     exec.parallel_for(cells, UpdateCellVapor{Exec::ptr(liquid_.cells.offset), Exec::ptr(liquid_.cells.sorted_pair),
                                              Exec::ptr(liquid_.pair_eva), nullptr, kg_per_unit, Exec::ptr(net_units_),

@@ -13,6 +13,11 @@ struct CouplingSettings {
   bool particle_evaporation = true;      // line 15
   bool texel_exchange = true;            // line 16
   bool particle_emission = true;         // line 17: texels -> particles
+  // Beyond the paper: evaporation cools the liquid by L dm / (m C); off
+  // reproduces the paper. Texels are not cooled: their temperature comes
+  // from the rigid particles every step (Eq. 7).
+  bool latent_heat = false;
+  float latent_heat_j_kg = 2.26e6f;
   // Texels with a wetting history at or above this do not condense (Sec. 6.2).
   float wet_threshold = 0.36787944f;
 };

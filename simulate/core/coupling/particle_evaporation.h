@@ -33,7 +33,7 @@ struct EvaporateParticles {
   const std::uint32_t* pair_cell;
   const float* pair_alpha;
   const float* area;         // A_i (Orthmann-style estimate, sph/surface_area_orthmann2013.h)
-  const float* temperature;  // T_i, K
+  float* temperature;        // T_i, K (lowered by the latent heat when that is on)
   const std::uint32_t* id;
   EvaporationCoefficients coefficients;
   float dt;
@@ -41,6 +41,9 @@ struct EvaporateParticles {
   std::uint64_t step;
   MassUnits* units;
   TexelMassUnits* pair_eva;  // per pair, texel units
+  // Beyond the paper (issue #5): evaporation takes L per kg from the
+  // particle, T_i -= L dm / (m_i C). 0: off, as in the paper.
+  float latent_heat_over_specific_heat = 0;  // L / C_i, K
 
   DP_HD void operator()(std::size_t i) const {
     const std::uint32_t* cell = pair_cell + kStencilSize * i;
@@ -59,6 +62,8 @@ struct EvaporateParticles {
     if (rounding_hash(id[i], step) < fraction) ++whole;
     if (whole > units[i]) whole = units[i];
     units[i] -= static_cast<MassUnits>(whole);
+    if (latent_heat_over_specific_heat > 0 && whole > 0 && units[i] > 0)
+      temperature[i] -= latent_heat_over_specific_heat * static_cast<float>(static_cast<double>(whole) / units[i]);
     share(whole << kTexelUnitShift, w, wsum, eva);
   }
 

@@ -25,7 +25,7 @@ TEST(coupling_ParticleEvaporation, ASpentParticleGivesTheAirExactlyWhatItHad) {
   const double unit = kg_per_texel_unit(test::kTestParticleMass);
   std::vector<Vec3> still(air.grid().cell_count(), Vec3{0, 0, 0});
   exec.parallel_for(2, EvaporateParticles{air.view(), still.data(), cell.data(), alpha.data(), area.data(), temperature.data(),
-                                          id.data(), k, 0.01f, unit, 0, units.data(), eva.data()});
+                                          id.data(), k, 0.01f, unit, 0, units.data(), eva.data(), 0.0f});
   EXPECT_EQ(units[0], 0u);  // 10 units (6e-10 kg) against 8.7e-10 kg of Eq. 16 at 90 degC
   TexelMassUnits given = 0;
   for (int p = 0; p < 8; ++p) given += eva[p];
@@ -38,6 +38,28 @@ TEST(coupling_ParticleEvaporation, ASpentParticleGivesTheAirExactlyWhatItHad) {
   TexelMassUnits second = 0;
   for (int p = 8; p < 16; ++p) second += eva[p];
   EXPECT_EQ(second, static_cast<TexelMassUnits>(lost) << kTexelUnitShift);
+}
+
+TEST(coupling_ParticleEvaporation, LatentHeatCoolsByLTimesLostMassOverHeatCapacity) {
+  CpuExec exec(1);
+  AirSettings s = test::quiet_air_box(4, 0.2f);
+  test::SortedParticles none(exec, {}, s.domain_min, s.domain_max, 0.1f);
+  AirGrid<CpuExec> air(exec, s, Vec3{0, -9.81f, 0}, none.view());
+  std::vector<Vec3> position{Vec3{0.07f, 0.08f, 0.11f}}, still(air.grid().cell_count(), Vec3{0, 0, 0});
+  std::vector<float> area{1e-4f}, temperature{363.15f};
+  std::vector<std::uint32_t> id{4}, cell(8);
+  std::vector<float> alpha(8);
+  std::vector<MassUnits> units{kFullParticleUnits};
+  std::vector<TexelMassUnits> eva(8);
+  exec.parallel_for(1, ComputeStencils{air.grid(), position.data(), cell.data(), alpha.data()});
+  const float L = 2.26e6f, C = 4186.0f;
+  exec.parallel_for(1, EvaporateParticles{air.view(), still.data(), cell.data(), alpha.data(), area.data(), temperature.data(), id.data(),
+                                          EvaporationCoefficients{}, 0.01f, kg_per_texel_unit(test::kTestParticleMass), 0,
+                                          units.data(), eva.data(), L / C});
+  const double lost = static_cast<double>(kFullParticleUnits - units[0]) / kFullParticleUnits;  // of the particle's mass
+  ASSERT_GT(lost, 0);
+  // Energy balance: L dm = m_after C dT.
+  EXPECT_NEAR(363.15 - temperature[0], L * lost / ((1 - lost) * C), 1e-4);
 }
 
 TEST(coupling_StochasticRounding, KeepsTheExpectedValue) {
