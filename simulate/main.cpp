@@ -107,6 +107,14 @@ int run(const Options& opt) {
       entry.air_vapor = {{"mass_kg", air->vapor_mass()}, {"initial_kg", l.initial}, {"inflow_gain_kg", l.inflow_gain},
                          {"open_in_kg", l.open_in}, {"open_out_kg", l.open_out}, {"exchanged_kg", l.exchanged}};
     }
+    const dp::WaterLedger w = simulation->water_ledger();
+    entry.water = {{"liquid_kg", w.liquid_kg},         {"texels_kg", w.texel_kg},
+                   {"vapor_kg", w.vapor_kg},           {"initial_kg", w.initial_kg},
+                   {"inflow_gain_kg", w.inflow_gain_kg}, {"open_in_kg", w.open_in_kg},
+                   {"open_out_kg", w.open_out_kg},     {"liquid_to_air_kg", w.liquid_to_air_kg},
+                   {"texels_to_air_kg", w.texels_to_air_kg}, {"texels_to_liquid_kg", w.texels_to_liquid_kg},
+                   {"drift_kg", w.drift_kg()},
+                   {"relative_drift", w.relative_drift()}};
     manifest.frames.push_back(entry);
     dp::io::write_manifest(frames_dir, manifest);
     const dp::StepReport& last = simulation->last_step();

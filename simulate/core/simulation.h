@@ -12,6 +12,8 @@
 #include "air/air_settings.h"
 #include "air/air_state.h"
 #include "backend/device.h"
+#include "coupling/coupling_settings.h"
+#include "coupling/water_ledger.h"
 #include "math/vec3.h"
 #include "surface/surface_texture_setup.h"
 
@@ -70,6 +72,7 @@ struct SimulationSetup {
   std::vector<float> rigid_adhesion;      // beta of Akinci et al. 2013 per rigid particle; empty: none
   std::vector<SurfaceTextureSetup> surfaces;  // textured rigids' static textures (paper Sec. 4.3)
   std::optional<AirSettings> air;         // the air phase (paper Sec. 4.2); none: particles only
+  CouplingSettings coupling;              // heat and water between air, particles and textures (Sec. 5-6); needs `air`
 
   float support_radius() const { return 2.0f * particle_spacing; }
   float particle_mass() const {
@@ -84,6 +87,7 @@ struct StepReport {
   float density_error = 0;      // average (rho* - rho0)/rho0 after the last iteration
   double seconds_neighbours = 0, seconds_pressure = 0, seconds_heat = 0, seconds_other = 0;  // wall clock
   double seconds_grid = 0;      // the air phase (Alg. 1 lines 7-11), wall clock
+  double seconds_evaporation = 0;  // Alg. 1 lines 15-16 ("Eva" of the paper's Table 1), wall clock
   AirStepReport air;            // projection iterations and residual, sub-steps
 };
 
@@ -127,6 +131,8 @@ class Simulation {
   virtual const StepReport& last_step() const = 0;
   // The air grid's state; none when the setup has no air phase.
   virtual std::optional<AirSnapshot> air() const = 0;
+  // Where the water is now, and the drift of its sum (coupling/water_ledger.h).
+  virtual WaterLedger water_ledger() const = 0;
 };
 
 // Throws std::invalid_argument naming the problem when the air grid's cells

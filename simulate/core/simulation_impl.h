@@ -7,6 +7,8 @@
 #include <utility>
 
 #include "air/air_grid.h"
+#include "coupling/air_coupling.h"
+#include "coupling/emission_texels_to_particles.h"
 #include "simulation.h"
 #include "sph/adaptivity_winchenbach2017_driver.h"
 #include "sph/boundary_akinci2012.h"
@@ -93,6 +95,7 @@ class SimulationImpl final : public Simulation {
     Exec::upload(liquid_.position, setup.liquid_position);
     Exec::upload(liquid_.velocity, setup.liquid_velocity);
     Exec::upload(liquid_.id, ids);
+    next_id_ = static_cast<std::uint32_t>(n);
     Exec::upload(liquid_.units, setup.liquid_units.size() == n ? setup.liquid_units
                                                                : std::vector<MassUnits>(n, kFullParticleUnits));
     liquid_.extra_count = 0;
@@ -103,7 +106,11 @@ class SimulationImpl final : public Simulation {
     surfaces_.prepare(exec_, setup, rigid_grid_.view(rigid_position_), rigid_grid_.order, rigid_volume_, rigid_temperature_);
     area_calibration_ = flat_face_area_calibration(kernel_, setup.particle_spacing);
     heat_dt_limit_ = heat_time_step_limit_of(setup);
-    if (setup.air) air_.emplace(exec_, *setup.air, setup.gravity, rigid_grid_.view(rigid_position_));
+    if (setup.air) {
+      air_.emplace(exec_, *setup.air, setup.gravity, rigid_grid_.view(rigid_position_));
+      coupling_.prepare(exec_, setup.coupling, *air_, rigid_position_, surfaces_);
+    }
+    initial_water_ = water_ledger();
   }
 
   StepReport step() override { return step_with(next_time_step()); }
@@ -144,6 +151,27 @@ class SimulationImpl final : public Simulation {
   std::optional<AirSnapshot> air() const override {
     if (!air_) return std::nullopt;
     return air_->snapshot();
+  }
+  WaterLedger water_ledger() const override {
+    WaterLedger l;
+    std::uint64_t units = 0;  // exact: 2^24 per particle, far from 2^64
+    for (MassUnits u : Exec::download(liquid_.units)) units += u;
+    l.liquid_kg = static_cast<double>(units) * (static_cast<double>(particle_mass_) / kFullParticleUnits);
+    for (const SurfaceSnapshot& s : surfaces_.snapshots()) l.texel_kg += s.total_mass().kg(s.kg_per_unit);
+    l.initial_kg = initial_water_.total_kg();
+    if (air_) {
+      const AirLedger& a = air_->ledger();
+      l.vapor_kg = air_->vapor_mass(exec_);
+      l.inflow_gain_kg = a.inflow_gain;
+      l.open_in_kg = a.open_in;
+      l.open_out_kg = a.open_out;
+      const double k = surfaces_.kg_per_unit();
+      l.liquid_to_air_kg = static_cast<double>(coupling_.liquid_to_air_units()) * k;
+      l.texels_to_air_kg = static_cast<double>(coupling_.texels_to_air_units()) * k;
+    }
+    l.texels_to_liquid_kg = static_cast<double>(emitted_particles_) * particle_mass_;
+    if (steps_ == 0 && l.initial_kg == 0) l.initial_kg = l.total_kg();
+    return l;
   }
 
  private:
@@ -315,6 +343,8 @@ class SimulationImpl final : public Simulation {
     exec_.synchronize();
     report.seconds_other = other + seconds_since(t3);
     step_air(dt, report);  // Alg. 1 Phase 2
+    couple(dt, report);    // Alg. 1 Phase 3, lines 12-16
+    emit_particles();      // line 17
     report_ = report;
     return report;
   }
@@ -328,6 +358,78 @@ class SimulationImpl final : public Simulation {
     report.air = air_->step(exec_, dt);
     exec_.synchronize();
     report.seconds_grid = seconds_since(t);
+  }
+
+  // Alg. 1 lines 12-16, the air's side of Phase 3 (texel temperatures,
+  // line 14, run with the particles' heat). Line 17 is emit_particles; line
+  // 18 runs at the start of the next step (adapt_masses), removing particles
+  // that evaporated completely; line 19 (path force) is not implemented.
+  void couple(float dt, StepReport& report) {
+    if (!air_) return;
+    auto t = Clock::now();
+    coupling_.find_neighbours(exec_, *air_, liquid_.position);  // line 12
+    exec_.synchronize();
+    report.seconds_neighbours += seconds_since(t);
+    t = Clock::now();
+    const LiquidMaterial& l = setup_.liquid;
+    const RigidMaterial& r = setup_.rigid;
+    const float spacing = setup_.particle_spacing;
+    const HeatSurfels liquid{Exec::ptr(surface_area_), 0.0f, Exec::ptr(liquid_.units), nullptr, particle_mass_, l.specific_heat,
+                             l.conductivity, nullptr, Exec::ptr(liquid_.id), Exec::ptr(liquid_.temperature)};
+    // A boundary particle stands for one spacing squared of the rigid's surface.
+    const HeatSurfels rigid{nullptr, spacing * spacing, nullptr, Exec::ptr(rigid_volume_), r.density, r.specific_heat, r.conductivity,
+                            Exec::ptr(rigid_held_), nullptr, Exec::ptr(rigid_temperature_)};
+    coupling_.exchange_heat(exec_, *air_, liquid, rigid, dt, static_cast<std::uint64_t>(steps_));  // line 13
+    exec_.synchronize();
+    report.seconds_heat += seconds_since(t);
+    t = Clock::now();
+    const double unit_kg = kg_per_texel_unit(particle_mass_);
+    coupling_.evaporate_particles(exec_, *air_, surface_area_, liquid_.temperature, liquid_.id, liquid_.units, l.specific_heat,
+                                  unit_kg, dt, static_cast<std::uint64_t>(steps_));  // line 15
+    coupling_.exchange_texels(exec_, *air_, surfaces_, dt);                                       // line 16
+    exec_.synchronize();
+    report.seconds_evaporation = seconds_since(t);
+  }
+
+  // Alg. 1 line 17 (Sec. 6.2): seeds whose texels hold a particle's mass
+  // emit one. Emission is rare, so the new particles are appended on the
+  // host, and only in steps where some seed emitted.
+  void emit_particles() {
+    if (!setup_.coupling.particle_emission) return;
+    for (std::size_t r = 0; r < surfaces_.count(); ++r) {
+      auto& tex = surfaces_.texture(r);
+      const std::size_t seeds = tex.seeds.size();
+      if (seeds == 0) continue;
+      emitted_.resize(seeds);
+      seed_temperature_.resize(seeds);
+      exec_.parallel_for(seeds, EmitFromSeeds{Exec::ptr(tex.seed_texel_offset), Exec::ptr(tex.seed_texel_index), Exec::ptr(tex.wetting),
+                                              Exec::ptr(tex.temperature), setup_.coupling.wet_threshold, Exec::ptr(tex.mass),
+                                              Exec::ptr(emitted_), Exec::ptr(seed_temperature_)});
+      if (exec_.find_first(seeds, IsSet{Exec::ptr(emitted_)}) == seeds) continue;
+      append_emitted(tex.seeds, Exec::download(emitted_), Exec::download(seed_temperature_));
+    }
+  }
+
+  void append_emitted(const SeedingPoints& seeds, const std::vector<std::uint8_t>& emitted, const std::vector<float>& temperature) {
+    std::vector<Vec3> x = Exec::download(liquid_.position), v = Exec::download(liquid_.velocity);
+    std::vector<float> t = Exec::download(liquid_.temperature);
+    std::vector<MassUnits> u = Exec::download(liquid_.units);
+    std::vector<std::uint32_t> id = Exec::download(liquid_.id);
+    for (std::size_t s = 0; s < emitted.size(); ++s) {
+      if (!emitted[s]) continue;
+      x.push_back(seeds.position[s] + setup_.particle_spacing * seeds.normal[s]);
+      v.push_back(Vec3{0, 0, 0});
+      t.push_back(temperature[s]);
+      u.push_back(kFullParticleUnits);
+      id.push_back(next_id_++);
+      ++emitted_particles_;
+    }
+    Exec::upload(liquid_.position, x);
+    Exec::upload(liquid_.velocity, v);
+    Exec::upload(liquid_.temperature, t);
+    Exec::upload(liquid_.units, u);
+    Exec::upload(liquid_.id, id);
+    resize_scratch(x.size());
   }
 
   // PCISPH: predict, correct pressures until the average density error is
@@ -448,6 +550,12 @@ class SimulationImpl final : public Simulation {
   StepReport report_;
   SurfaceTextures<Exec> surfaces_;
   std::optional<AirGrid<Exec>> air_;
+  AirCoupling<Exec> coupling_;
+  WaterLedger initial_water_;
+  Buffer<std::uint8_t> emitted_;
+  Buffer<float> seed_temperature_;
+  std::uint32_t next_id_ = 0;           // for emitted particles
+  std::uint64_t emitted_particles_ = 0;
 };
 
 }  // namespace dp

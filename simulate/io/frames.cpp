@@ -86,6 +86,7 @@ void write_manifest(const std::filesystem::path& frames_dir, const FramesManifes
     if (!f.surface_files.empty()) entry["files"]["surfaces"] = f.surface_files;
     if (!f.air_file.empty()) entry["files"]["air"] = f.air_file;
     if (!f.air_vapor.is_null()) entry["air_vapor"] = f.air_vapor;
+    if (!f.water.is_null()) entry["water"] = f.water;
     j["frames"].push_back(entry);
   }
   write_atomically(frames_dir / kManifestName, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
@@ -145,6 +146,7 @@ FramesManifest read_manifest(const std::filesystem::path& frames_dir) {
           e.surface_files[rigid] = file_name(name, where + "files.surfaces." + rigid);
       if (f["files"].contains("air")) e.air_file = file_name(f["files"]["air"], where + "files.air");
       if (f.contains("air_vapor")) e.air_vapor = f["air_vapor"];
+      if (f.contains("water")) e.water = f["water"];
       m.frames.push_back(e);
     }
     m.extra = j;

@@ -122,6 +122,26 @@ AirInflowSettings read_air_inflow(JsonObject o, const AirSectionSettings& air) {
   return in;
 }
 
+CouplingSectionSettings read_coupling(JsonObject o) {
+  CouplingSectionSettings c;
+  c.evaporation_a = o.number("evaporation_a_kg_m2_s_pa", c.evaporation_a);
+  if (!(c.evaporation_a >= 0)) throw o.error("evaporation_a_kg_m2_s_pa", "expected a non-negative number");
+  c.evaporation_b = o.number("evaporation_b_kg_m3_pa", c.evaporation_b);
+  if (!(c.evaporation_b >= 0)) throw o.error("evaporation_b_kg_m3_pa", "expected a non-negative number");
+  c.heat_exchange = o.boolean("heat_exchange", c.heat_exchange);
+  c.particle_evaporation = o.boolean("particle_evaporation", c.particle_evaporation);
+  c.texel_exchange = o.boolean("texel_exchange", c.texel_exchange);
+  c.particle_emission = o.boolean("particle_emission", c.particle_emission);
+  c.latent_heat = o.boolean("latent_heat", c.latent_heat);
+  c.latent_heat_j_kg = positive(o, "latent_heat_j_kg", o.number("latent_heat_j_kg", c.latent_heat_j_kg));
+  c.air_density_kg_m3 = positive(o, "air_density_kg_m3", o.number("air_density_kg_m3", c.air_density_kg_m3));
+  c.air_specific_heat_j_kgk = positive(o, "air_specific_heat_j_kgk", o.number("air_specific_heat_j_kgk", c.air_specific_heat_j_kgk));
+  c.air_conductivity_w_mk = o.number("air_conductivity_w_mk", c.air_conductivity_w_mk);
+  if (!(c.air_conductivity_w_mk >= 0)) throw o.error("air_conductivity_w_mk", "expected a non-negative number");
+  o.finish();
+  return c;
+}
+
 AirSectionSettings read_air(JsonObject o, const SimulationSettings& sim) {
   AirSectionSettings a;
   a.resolution = static_cast<int>(o.integer("resolution", a.resolution));
@@ -253,6 +273,7 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
         positive(*m, "specific_heat_j_kgk", m->number("specific_heat_j_kgk", s.rigid_material.specific_heat_j_kgk));
     m->finish();
   }
+  if (auto c = o.optional_object("coupling")) s.coupling = read_coupling(*c);
   if (auto air = o.optional_object("air")) {
     s.air = read_air(*air, s);
     // The core's check, reported against the scene's key.

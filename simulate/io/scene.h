@@ -79,6 +79,17 @@ struct AirInflowSettings {
   double vapor_kg_m3 = 0;
 };
 
+// `simulation.coupling`: heat and water between air, particles and
+// textures (paper Sec. 5-6); defaults in simulate/core/coupling/.
+struct CouplingSectionSettings {
+  double evaporation_a = 30.6e-3 / 2.45e6;  // kg/(m^2 s Pa), Eq. 12's a
+  double evaporation_b = 32.1e-3 / 2.45e6;  // kg/(m^3 Pa), Eq. 12's b
+  bool heat_exchange = true, particle_evaporation = true, texel_exchange = true, particle_emission = true;
+  bool latent_heat = false;
+  double latent_heat_j_kg = 2.26e6;
+  double air_density_kg_m3 = 1.204, air_specific_heat_j_kgk = 1005, air_conductivity_w_mk = 0.0257;
+};
+
 struct AirSectionSettings {
   int resolution = 64;
   Vec3d domain_min_m, domain_max_m;  // default: the simulation domain
@@ -112,6 +123,7 @@ struct SimulationSettings {
   std::vector<RigidObject> rigids;
   RigidMaterialSettings rigid_material;
   std::optional<AirSectionSettings> air;
+  CouplingSectionSettings coupling;
 };
 
 struct MeshSettings {

@@ -128,6 +128,17 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   setup.rigid.density = static_cast<float>(s.rigid_material.density_kg_m3);
   setup.rigid.conductivity = static_cast<float>(s.rigid_material.conductivity_w_mk);
   setup.rigid.specific_heat = static_cast<float>(s.rigid_material.specific_heat_j_kgk);
+  setup.coupling.coefficients.a = s.coupling.evaporation_a;
+  setup.coupling.coefficients.b = s.coupling.evaporation_b;
+  setup.coupling.heat_exchange = s.coupling.heat_exchange;
+  setup.coupling.particle_evaporation = s.coupling.particle_evaporation;
+  setup.coupling.texel_exchange = s.coupling.texel_exchange;
+  setup.coupling.particle_emission = s.coupling.particle_emission;
+  setup.coupling.latent_heat = s.coupling.latent_heat;
+  setup.coupling.latent_heat_j_kg = static_cast<float>(s.coupling.latent_heat_j_kg);
+  setup.coupling.air.density = static_cast<float>(s.coupling.air_density_kg_m3);
+  setup.coupling.air.specific_heat = static_cast<float>(s.coupling.air_specific_heat_j_kgk);
+  setup.coupling.air.conductivity = static_cast<float>(s.coupling.air_conductivity_w_mk);
   setup.liquid.boundary_friction = static_cast<float>(s.liquid.boundary_friction);
   setup.liquid.temperature = static_cast<float>(s.liquid.temperature_k);
   if (s.air) setup.air = make_air_settings(*s.air);

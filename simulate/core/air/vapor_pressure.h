@@ -17,6 +17,10 @@ DP_HD inline double magnus_saturation_pressure(double celsius) {
   return 611.2 * exp(17.62 * celsius / (243.12 + celsius));
 }
 
+// Eq. 11 at a temperature in kelvin: the one place where the simulator's
+// kelvin meet the formula's degrees Celsius.
+DP_HD inline double saturation_pressure_at_kelvin(double kelvin) { return magnus_saturation_pressure(kelvin - kCelsiusZero); }
+
 // Eq. 10: p = rho_v R_w T, with rho_v = m_c / V_c and T in kelvin.
 DP_HD inline double vapor_pressure(double vapor_density, double kelvin) {
   return vapor_density * kWaterVaporGasConstant * kelvin;
@@ -25,7 +29,7 @@ DP_HD inline double vapor_pressure(double vapor_density, double kelvin) {
 // The vapor density (kg/m^3) of air at `kelvin` with relative humidity
 // `rh` in [0, 1]: rh p_sat / (R_w T).
 DP_HD inline double vapor_density_at_humidity(double rh, double kelvin) {
-  return rh * magnus_saturation_pressure(kelvin - kCelsiusZero) / (kWaterVaporGasConstant * kelvin);
+  return rh * saturation_pressure_at_kelvin(kelvin) / (kWaterVaporGasConstant * kelvin);
 }
 
 }  // namespace dp

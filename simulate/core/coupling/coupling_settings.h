@@ -1,0 +1,25 @@
+#pragma once
+// The coupling's settings (paper Sec. 5-6) as plain numbers; the scene's
+// `simulation.coupling` section (docs/scene-format.md) is read into this.
+#include "coupling/evaporation_rate_smith1994.h"
+#include "coupling/heat_grid_particles.h"
+
+namespace dp {
+
+struct CouplingSettings {
+  EvaporationCoefficients coefficients;  // a, b of Eq. 12
+  AirHeatProperties air;                 // rho_c, C_c, kappa_c of Eq. 15
+  bool heat_exchange = true;             // Alg. 1 line 13
+  bool particle_evaporation = true;      // line 15
+  bool texel_exchange = true;            // line 16
+  bool particle_emission = true;         // line 17: texels -> particles
+  // Beyond the paper: evaporation cools the liquid by L dm / (m C); off
+  // reproduces the paper. Texels are not cooled: their temperature comes
+  // from the rigid particles every step (Eq. 7).
+  bool latent_heat = false;
+  float latent_heat_j_kg = 2.26e6f;
+  // Texels with a wetting history at or above this do not condense (Sec. 6.2).
+  float wet_threshold = 0.36787944f;
+};
+
+}  // namespace dp

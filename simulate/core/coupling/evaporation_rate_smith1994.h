@@ -1,0 +1,50 @@
+#pragma once
+// The rate of evaporation and condensation of a surface element (paper
+// Sec. 3.4 and 6.1): Smith, Löf & Jones 1994's empirical law (paper Eq. 12)
+//   dm_s/dtau = A_s (a + b |v|) (p_sat(T_s) - p_c)
+// with p_sat by Magnus (Eq. 11) and p_c by the ideal gas (Eq. 10), both in
+// air/vapor_pressure.h, split by its sign into evaporation (Eq. 16) and
+// condensation (Eq. 17, without the velocity term: b = 0).
+#include <cmath>
+
+#include "air/vapor_pressure.h"
+#include "backend/host_device.h"
+
+namespace dp {
+
+// a in kg/(m^2 s Pa), b in kg/(m^3 Pa) (per m/s of air speed). The paper
+// gives no values. Defaults: Smith et al. 1994's pool law as quoted by
+// Woolley et al. 2011 (Energy & Buildings), q = (30.6 + 32.1 v)(p_w - p_a)
+// W/m^2 with pressures in kPa, turned into mass by the latent heat of
+// vaporisation near 20 degC, L = 2.45 MJ/kg: a = 30.6e-3 / L, b = 32.1e-3 / L.
+struct EvaporationCoefficients {
+  double a = 30.6e-3 / 2.45e6;
+  double b = 32.1e-3 / 2.45e6;
+};
+
+// What a surfel sees of the air at its position: vapor density (kg/m^3),
+// temperature (K) and speed (m/s), interpolated from the cells.
+struct AirAtSurfel {
+  double vapor_density;
+  double temperature;
+  double speed;
+};
+
+// Eq. 12 in kg/s; positive: the surfel loses mass (evaporation).
+DP_HD inline double smith_mass_rate(double area, double a, double b, double speed, double surface_kelvin, const AirAtSurfel& air) {
+  const double p_sat = saturation_pressure_at_kelvin(surface_kelvin);          // Eq. 11
+  const double p_c = vapor_pressure(air.vapor_density, air.temperature);        // Eq. 10
+  return area * (a + b * speed) * (p_sat - p_c);
+}
+
+// Eq. 16: evaRate(c, s) = max(dm_s/dtau, 0), kg/s.
+DP_HD inline double evaporation_rate(double area, const EvaporationCoefficients& k, double surface_kelvin, const AirAtSurfel& air) {
+  return fmax(smith_mass_rate(area, k.a, k.b, air.speed, surface_kelvin, air), 0.0);
+}
+
+// Eq. 17: condRate(c, s) = -min(dm_s/dtau, 0) with b = 0, kg/s.
+DP_HD inline double condensation_rate(double area, const EvaporationCoefficients& k, double surface_kelvin, const AirAtSurfel& air) {
+  return -fmin(smith_mass_rate(area, k.a, 0.0, air.speed, surface_kelvin, air), 0.0);
+}
+
+}  // namespace dp

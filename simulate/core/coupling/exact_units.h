@@ -1,0 +1,59 @@
+#pragma once
+// Integer helpers for mass transfers in texel mass units
+// (surface/texel_mass_units.h): every transfer of the coupling is a whole
+// number of units, computed once and applied to both sides, so the liquid
+// and texel stores change by exactly what the air is credited with.
+#include <cstdint>
+
+#include "backend/host_device.h"
+#include "surface/texel_mass_units.h"
+
+namespace dp {
+
+// Transfers are kept below 2^62 units (2^30 particles' mass), far above any
+// step's exchange, so sums of eight of them cannot overflow 64 bits.
+inline constexpr double kMaxTransferUnits = 4.6116860184273879e18;
+
+// kg -> whole texel units, rounded down (a transfer never exceeds its rate).
+DP_HD inline TexelMassUnits transfer_units_of_kg(double kg, double kg_per_unit) {
+  const double u = kg / kg_per_unit;
+  if (!(u > 0)) return 0;
+  return static_cast<TexelMassUnits>(u < kMaxTransferUnits ? u : kMaxTransferUnits);
+}
+
+// floor(x * num / den) exactly, for num <= den: the scaled transfers of
+// Alg. 2 then never add up to more than `num` (the sum of floors is at most
+// the floor of the sum). 128-bit products: nvcc and g++ both have them.
+DP_HD inline TexelMassUnits scale_units(TexelMassUnits x, TexelMassUnits num, TexelMassUnits den) {
+  if (den == 0 || num >= den) return x;
+  __extension__ typedef unsigned __int128 Wide;
+  return static_cast<TexelMassUnits>(static_cast<Wide>(x) * num / den);
+}
+
+// Signed units split in two halves that a double-accumulating sum adds
+// exactly (each block and total below 2^53): the low 24 bits and the rest.
+struct SignedUnitsLow {
+  const std::int64_t* v;
+  DP_HD double operator()(std::size_t i) const {
+    const std::int64_t x = v[i];
+    const std::int64_t m = x < 0 ? -x : x;
+    return static_cast<double>(x < 0 ? -(m & 0xFFFFFF) : (m & 0xFFFFFF));
+  }
+};
+struct SignedUnitsHigh {
+  const std::int64_t* v;
+  DP_HD double operator()(std::size_t i) const {
+    const std::int64_t x = v[i];
+    const std::int64_t m = x < 0 ? -x : x;
+    return static_cast<double>(x < 0 ? -(m >> 24) : (m >> 24));
+  }
+};
+
+// The exact sum of n signed unit counts on either backend.
+template <class Exec>
+std::int64_t exact_units_sum(const Exec& exec, std::size_t n, const std::int64_t* v) {
+  const double lo = exec.sum(n, SignedUnitsLow{v}), hi = exec.sum(n, SignedUnitsHigh{v});
+  return static_cast<std::int64_t>(hi) * (std::int64_t{1} << 24) + static_cast<std::int64_t>(lo);
+}
+
+}  // namespace dp
