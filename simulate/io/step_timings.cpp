@@ -20,7 +20,7 @@ StepTiming table1_row(const StepReport& r, std::int64_t step, double time_s) {
   t.grid_ms = 1e3 * r.seconds_grid;
   t.neigh_ms = 1e3 * r.seconds_neighbours;
   t.heat_ms = 1e3 * r.seconds_heat;
-  t.eva_ms = 0;  // evaporation and condensation: issue #5
+  t.eva_ms = 1e3 * r.seconds_evaporation;
   t.pressure_iterations = r.pressure_iterations;
   t.density_error = r.density_error;
   t.air_iterations = r.air.projection_iterations;
