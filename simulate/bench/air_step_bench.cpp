@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_arguments.h"
 #include "simulation.h"
 
 namespace {
@@ -24,25 +25,13 @@ struct Options {
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    auto next = [&]() -> const char* {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "dewpoint-bench-air: %s needs a value\n", a.c_str());
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "--resolution") o.resolution = std::atoi(next());
-    else if (a == "--steps") o.steps = std::atoi(next());
-    else if (a == "--warmup") o.warmup = std::atoi(next());
-    else if (a == "--device") o.device = next();
-    else if (a == "--threads") o.threads = std::atoi(next());
-    else {
-      std::fprintf(stderr, "usage: dewpoint-bench-air [--resolution N] [--steps N] [--warmup N] [--device cpu|cuda] [--threads N]\n");
-      std::exit(a == "--help" ? 0 : 2);
-    }
-  }
+  dp::bench::BenchArguments("dewpoint-bench-air")
+      .add("--resolution", "N", &o.resolution)
+      .add("--steps", "N", &o.steps)
+      .add("--warmup", "N", &o.warmup)
+      .add("--device", "cpu|cuda", &o.device)
+      .add("--threads", "N", &o.threads)
+      .parse(argc, argv);
   return o;
 }
 

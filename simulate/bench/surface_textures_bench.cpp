@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "rigid/sample_surface.h"
+#include "bench_arguments.h"
 #include "simulation.h"
 
 namespace {
@@ -29,27 +30,14 @@ struct Options {
 
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    auto next = [&]() -> const char* {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "dewpoint-bench-surface: %s needs a value\n", a.c_str());
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "--rigid-particles") o.rigid_particles = std::atol(next());
-    else if (a == "--texels") o.texels = std::atoi(next());
-    else if (a == "--liquid") o.liquid = std::atol(next());
-    else if (a == "--steps") o.steps = std::atoi(next());
-    else if (a == "--device") o.device = next();
-    else if (a == "--threads") o.threads = std::atoi(next());
-    else {
-      std::fprintf(stderr, "usage: dewpoint-bench-surface [--rigid-particles N] [--texels W] [--liquid N] [--steps N] "
-                           "[--device cpu|cuda] [--threads N]\n");
-      std::exit(a == "--help" ? 0 : 2);
-    }
-  }
+  dp::bench::BenchArguments("dewpoint-bench-surface")
+      .add("--rigid-particles", "N", &o.rigid_particles)
+      .add("--texels", "W", &o.texels)
+      .add("--liquid", "N", &o.liquid)
+      .add("--steps", "N", &o.steps)
+      .add("--device", "cpu|cuda", &o.device)
+      .add("--threads", "N", &o.threads)
+      .parse(argc, argv);
   return o;
 }
 
