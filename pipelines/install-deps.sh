@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ make pkg-config
   libeigen3-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
-  libtbb-dev libassimp-dev libembree-dev libopenimageio-dev openimageio-tools
+  libtbb-dev libassimp-dev libembree-dev libopenimageio-dev openimageio-tools jq
   libopenexr-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev libboost-dev
   clang libclang-rt-14-dev libomp-dev
 )
