@@ -9,6 +9,7 @@
 #include "air/air_grid.h"
 #include "coupling/air_coupling.h"
 #include "coupling/emission_texels_to_particles.h"
+#include "coupling/path_force.h"
 #include "simulation.h"
 #include "sph/adaptivity_winchenbach2017_driver.h"
 #include "sph/boundary_akinci2012.h"
@@ -104,6 +105,7 @@ class SimulationImpl final : public Simulation {
     resize_scratch(n);
     prepare_rigids(setup);
     surfaces_.prepare(exec_, setup, rigid_grid_.view(rigid_position_), rigid_grid_.order, rigid_volume_, rigid_temperature_);
+    path_force_.prepare(surfaces_, rigid_position_.size(), setup.coupling.path_force ? setup.coupling.path_adhesion : 0.0f);
     area_calibration_ = flat_face_area_calibration(kernel_, setup.particle_spacing);
     heat_dt_limit_ = heat_time_step_limit_of(setup);
     if (setup.air) {
@@ -311,12 +313,15 @@ class SimulationImpl final : public Simulation {
     t1 = Clock::now();
     // Alg. 1 line 5: external forces; surface tension and adhesion after
     // Akinci et al. 2013.
-    const bool tension = setup_.liquid.surface_tension > 0 || has_adhesion_;
+    const bool tension = setup_.liquid.surface_tension > 0 || has_adhesion_ || path_force_.active();
     if (tension) {
       const SurfaceTensionParameters st{kernel_, particle_mass_, setup_.liquid.rest_density, setup_.liquid.surface_tension};
       exec_.parallel_for(n, ComputeSurfaceTensionAcceleration{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(density_),
                                                               Exec::ptr(normal_), Exec::ptr(rigid_volume_),
                                                               Exec::ptr(rigid_adhesion_), st, Exec::ptr(tension_acc_)});
+      // Alg. 1 line 19 (coupling/path_force.h), from this step's wetting history.
+      path_force_.apply(exec_, surfaces_, rigid, rigid_volume_, Exec::ptr(liquid_.position), n, kernel_.h,
+                        setup_.liquid.rest_density, Exec::ptr(tension_acc_));
     }
     exec_.parallel_for(n, SetNonPressureAcceleration{setup_.gravity, tension ? Exec::ptr(tension_acc_) : nullptr,
                                                      Exec::ptr(nonpressure_acc_)});
@@ -363,7 +368,8 @@ class SimulationImpl final : public Simulation {
   // Alg. 1 lines 12-16, the air's side of Phase 3 (texel temperatures,
   // line 14, run with the particles' heat). Line 17 is emit_particles; line
   // 18 runs at the start of the next step (adapt_masses), removing particles
-  // that evaporated completely; line 19 (path force) is not implemented.
+  // that evaporated completely; line 19 (path force) joins the next step's
+  // surface tension and adhesion (path_force_, coupling/path_force.h).
   void couple(float dt, StepReport& report) {
     if (!air_) return;
     auto t = Clock::now();
@@ -551,6 +557,7 @@ class SimulationImpl final : public Simulation {
   SurfaceTextures<Exec> surfaces_;
   std::optional<AirGrid<Exec>> air_;
   AirCoupling<Exec> coupling_;
+  ParticlePathForce<Exec> path_force_;
   WaterLedger initial_water_;
   Buffer<std::uint8_t> emitted_;
   Buffer<float> seed_temperature_;

@@ -134,6 +134,9 @@ CouplingSectionSettings read_coupling(JsonObject o) {
   c.particle_emission = o.boolean("particle_emission", c.particle_emission);
   c.latent_heat = o.boolean("latent_heat", c.latent_heat);
   c.latent_heat_j_kg = positive(o, "latent_heat_j_kg", o.number("latent_heat_j_kg", c.latent_heat_j_kg));
+  c.path_force = o.boolean("path_force", c.path_force);
+  c.path_adhesion = o.number("path_adhesion", c.path_adhesion);
+  if (!(c.path_adhesion >= 0)) throw o.error("path_adhesion", "expected a non-negative number");
   c.air_density_kg_m3 = positive(o, "air_density_kg_m3", o.number("air_density_kg_m3", c.air_density_kg_m3));
   c.air_specific_heat_j_kgk = positive(o, "air_specific_heat_j_kgk", o.number("air_specific_heat_j_kgk", c.air_specific_heat_j_kgk));
   c.air_conductivity_w_mk = o.number("air_conductivity_w_mk", c.air_conductivity_w_mk);

@@ -87,6 +87,8 @@ struct CouplingSectionSettings {
   bool heat_exchange = true, particle_evaporation = true, texel_exchange = true, particle_emission = true;
   bool latent_heat = false;
   double latent_heat_j_kg = 2.26e6;
+  bool path_force = false;
+  double path_adhesion = 10.0;
   double air_density_kg_m3 = 1.204, air_specific_heat_j_kgk = 1005, air_conductivity_w_mk = 0.0257;
 };
 

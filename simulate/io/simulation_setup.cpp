@@ -136,6 +136,8 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   setup.coupling.particle_emission = s.coupling.particle_emission;
   setup.coupling.latent_heat = s.coupling.latent_heat;
   setup.coupling.latent_heat_j_kg = static_cast<float>(s.coupling.latent_heat_j_kg);
+  setup.coupling.path_force = s.coupling.path_force;
+  setup.coupling.path_adhesion = static_cast<float>(s.coupling.path_adhesion);
   setup.coupling.air.density = static_cast<float>(s.coupling.air_density_kg_m3);
   setup.coupling.air.specific_heat = static_cast<float>(s.coupling.air_specific_heat_j_kgk);
   setup.coupling.air.conductivity = static_cast<float>(s.coupling.air_conductivity_w_mk);

@@ -18,6 +18,13 @@ struct CouplingSettings {
   // from the rigid particles every step (Eq. 7).
   bool latent_heat = false;
   float latent_heat_j_kg = 2.26e6f;
+  // Alg. 1 line 19, our definition (coupling/path_force.h): liquid is drawn
+  // along a surface towards its wetter texels (Akinci 2013's adhesion
+  // kernel weighted by the difference in wetting history), so later drops
+  // follow earlier paths. Off, or a uniformly wet surface, leaves the step
+  // as the paper's.
+  bool path_force = false;
+  float path_adhesion = 10.0f;  // beta_path, the units of the rigids' adhesion beta
   // Texels with a wetting history at or above this do not condense (Sec. 6.2).
   float wet_threshold = 0.36787944f;
 };

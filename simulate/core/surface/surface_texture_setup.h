@@ -39,6 +39,7 @@ struct SurfaceTextureSetup {
   float initial_mass_per_area = 0;   // kg/m^2; each texel starts with min(this * A_t, m_t^max)
   float initial_temperature = 293.15f;  // K, for texels no rigid particle reaches
   float wetting_decay = 1.0f;        // s: the wetting history falls by 1/e in this time once dry (0: no memory)
+  std::vector<float> initial_wetting;  // per texel in [0, 1]; empty: dry
 };
 
 // Seeding points of liquid particles on a surface (Sec. 4.3, 6.2), each with

@@ -116,6 +116,9 @@ class SurfaceTextures {
       if (p >= static_cast<std::size_t>(g.width) * g.height) throw std::invalid_argument(which + ": pixel index outside the atlas");
     if (s.rigid_first + s.rigid_count > rigid_particles) throw std::invalid_argument(which + ": rigid particle range out of bounds");
     if (!(s.wetting_decay >= 0)) throw std::invalid_argument(which + ": wetting decay time must be non-negative");
+    if (!s.initial_wetting.empty() && s.initial_wetting.size() != n)
+      throw std::invalid_argument(which + ": initial wetting has " + std::to_string(s.initial_wetting.size()) + " entries, expected " +
+                                  std::to_string(n));
   }
 
   void upload_static(Texture& tex, float particle_mass) {
@@ -133,7 +136,7 @@ class SurfaceTextures {
     Exec::upload(tex.max_mass, max_units);
     Exec::upload(tex.mass, mass);
     Exec::upload(tex.temperature, std::vector<float>(n, tex.setup.initial_temperature));
-    Exec::upload(tex.wetting, std::vector<float>(n, 0.0f));
+    Exec::upload(tex.wetting, tex.setup.initial_wetting.size() == n ? tex.setup.initial_wetting : std::vector<float>(n, 0.0f));
     Exec::upload(tex.seed_position, tex.seeds.position);
     Exec::upload(tex.seed_normal, tex.seeds.normal);
     Exec::upload(tex.seed_texel_offset, tex.seeds.texel_offset);
