@@ -31,13 +31,16 @@ def _mtime(path):
         return None
 
 
-def image_readable(path):
+def images_readable(*paths):
     """oiiotool reads every pixel for --printstats, so a truncated EXR or PNG
-    fails here even when its header is intact."""
-    if not os.path.isfile(path):
+    fails here even when its header is intact (one process for all: its
+    start-up costs more than reading a frame)."""
+    if not all(os.path.isfile(p) for p in paths):
         return False
-    result = subprocess.run(["oiiotool", path, "--printstats"], stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL, check=False)
+    command = ["oiiotool"]
+    for p in paths:
+        command += [p, "--printstats"]
+    result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
     return result.returncode == 0
 
 
@@ -70,7 +73,7 @@ class ShotState:
         """The contact sheet of these frames exists, lacks no frame and is
         newer than every image on it."""
         sheet = contact_sheet_file(out, self.frames)
-        if not image_readable(sheet) or os.path.exists(sheet.replace(".png", ".missing.txt")):
+        if not images_readable(sheet) or os.path.exists(sheet.replace(".png", ".missing.txt")):
             return False
         if len(self.rendered) != len(self.frames):
             return False
@@ -112,7 +115,7 @@ class ShotState:
         if counts is None or counts.get("vertex") != entry.get("liquid_particles"):
             return f"{particles} missing, not whole, or not the manifest's particle count"
         for name, surface in (files.get("surfaces") or {}).items():
-            if not image_readable(os.path.join(self.frames_dir, surface)):
+            if not images_readable(os.path.join(self.frames_dir, surface)):
                 return f"surface texture {surface} of rigid {name} unreadable"
         air = files.get("air")
         if air is not None:
@@ -147,6 +150,6 @@ class ShotState:
         png = os.path.join(self.images_dir, _frame_file("beauty", frame, "png"))
         if _load_json(os.path.join(self.images_dir, _frame_file("beauty", frame, "json"))) is None:
             return False
-        if not (image_readable(exr) and image_readable(png)):
+        if not images_readable(exr, png):
             return False
         return _mtime(exr) >= _mtime(self.mesh_file(frame))
