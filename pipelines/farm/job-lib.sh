@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by the farm's job scripts (pipelines/farm/*.sbatch). Slurm runs a
 # copy of the script from its spool folder, so the submitter exports where
 # this file (DEWPOINT_FARM) and the executables (DEWPOINT_BIN) are.

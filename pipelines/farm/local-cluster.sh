@@ -86,8 +86,8 @@ CONF
 }
 
 wait_for_idle_node() {
-  local i state
-  for i in $(seq 1 60); do
+  local state
+  for _ in $(seq 1 60); do
     state=$(SLURM_CONF="$dir/slurm.conf" sinfo -h -N -o '%T' 2>/dev/null | head -n1 || true)
     case "$state" in
       idle) return 0 ;;
@@ -115,12 +115,12 @@ start() {
 }
 
 stop_daemon() {
-  local pidfile=$1 pid i
+  local pidfile=$1 pid
   [ -f "$pidfile" ] || return 0
   pid=$(cat "$pidfile")
   if kill -0 "$pid" 2>/dev/null; then
     kill "$pid"
-    for i in $(seq 1 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+    for _ in $(seq 1 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
     kill -0 "$pid" 2>/dev/null && kill -9 "$pid" 2>/dev/null
   fi
   rm -f "$pidfile"

@@ -37,7 +37,9 @@ trap cleanup EXIT
 
 # Ports nobody listens on, so a cluster that already runs here is no obstacle.
 free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
-export DEWPOINT_SLURMCTLD_PORT=$(free_port) DEWPOINT_SLURMD_PORT=$(free_port)
+DEWPOINT_SLURMCTLD_PORT=$(free_port)
+DEWPOINT_SLURMD_PORT=$(free_port)
+export DEWPOINT_SLURMCTLD_PORT DEWPOINT_SLURMD_PORT
 if ! "$farm/local-cluster.sh" start "$cluster" >"$work/cluster-start.log" 2>&1; then
   echo "SKIPPED: a local Slurm cluster cannot start here:"
   cat "$work/cluster-start.log"
@@ -49,7 +51,7 @@ file() { printf '%s/%s.%04d.%s' "$1" "$2" "$3" "$4"; }
 
 # Submits and waits until every job it printed has left the queue.
 submit_and_wait() {
-  "$farm/submit" "$scene" -o "$out" "$@" | tee "$work/submit.out"
+  "$farm/submit" "$scene" -o "$out" | tee "$work/submit.out"
   local ids deadline=$((SECONDS + 150))
   ids=$(awk '/^submitted/ { print $4 }' "$work/submit.out" | paste -sd,)
   [ -n "$ids" ] || return 0
