@@ -39,6 +39,7 @@ trap cleanup EXIT
 free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
 DEWPOINT_SLURMCTLD_PORT=$(free_port)
 DEWPOINT_SLURMD_PORT=$(free_port)
+while [ "$DEWPOINT_SLURMD_PORT" = "$DEWPOINT_SLURMCTLD_PORT" ]; do DEWPOINT_SLURMD_PORT=$(free_port); done
 export DEWPOINT_SLURMCTLD_PORT DEWPOINT_SLURMD_PORT
 if ! "$farm/local-cluster.sh" start "$cluster" >"$work/cluster-start.log" 2>&1; then
   echo "SKIPPED: a local Slurm cluster cannot start here:"
