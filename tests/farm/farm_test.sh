@@ -34,6 +34,10 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
+# A signal (ctest's timeout, Ctrl-C) ends the script through exit, so the
+# cluster is stopped then too.
+trap 'exit 143' TERM
+trap 'exit 130' INT
 
 # Ports nobody listens on, so a cluster that already runs here is no obstacle.
 free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
