@@ -100,8 +100,9 @@ wait_for_idle_node() {
 
 start() {
   require_tools
-  [ -f "$dir/slurmctld.pid" ] && kill -0 "$(cat "$dir/slurmctld.pid")" 2>/dev/null &&
+  if [ -f "$dir/slurmctld.pid" ] && running "$(cat "$dir/slurmctld.pid")"; then
     die "a cluster already runs from $dir (stop it first)"
+  fi
   mkdir -p "$dir"
   write_munge_key
   start_munged
@@ -114,14 +115,21 @@ start() {
   echo "SLURM_CONF=$dir/slurm.conf"
 }
 
+# A daemon that has exited but was not reaped (a container whose first
+# process does not reap orphans) still answers kill -0; it counts as gone.
+running() {
+  local state
+  state=$(cut -d' ' -f3 "/proc/$1/stat" 2>/dev/null) && [ -n "$state" ] && [ "$state" != Z ]
+}
+
 stop_daemon() {
   local pidfile=$1 pid
   [ -f "$pidfile" ] || return 0
   pid=$(cat "$pidfile")
-  if kill -0 "$pid" 2>/dev/null; then
+  if running "$pid"; then
     kill "$pid"
-    for _ in $(seq 1 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
-    kill -0 "$pid" 2>/dev/null && kill -9 "$pid" 2>/dev/null
+    for _ in $(seq 1 50); do running "$pid" || break; sleep 0.1; done
+    if running "$pid"; then kill -9 "$pid" 2>/dev/null || true; fi
   fi
   rm -f "$pidfile"
 }
