@@ -97,7 +97,10 @@ class ShotState:
         rigid = m.get("rigid_particles")
         if not isinstance(rigid, str) or ply_element_counts(os.path.join(self.frames_dir, rigid)) is None:
             return f"rigid particles file {rigid!r} missing or not whole"
-        entries = {e.get("index"): e for e in m.get("frames", []) if isinstance(e, dict)}
+        listed = m.get("frames")
+        if not isinstance(listed, list):
+            return f"{manifest_file}: key 'frames' is not a list"
+        entries = {e.get("index"): e for e in listed if isinstance(e, dict)}
         for frame in self.frames:
             problem = self._frame_problem(entries.get(frame), frame)
             if problem:
@@ -114,7 +117,10 @@ class ShotState:
         counts = ply_element_counts(os.path.join(self.frames_dir, particles))
         if counts is None or counts.get("vertex") != entry.get("liquid_particles"):
             return f"{particles} missing, not whole, or not the manifest's particle count"
-        for name, surface in (files.get("surfaces") or {}).items():
+        surfaces = files.get("surfaces") or {}
+        if not isinstance(surfaces, dict):
+            return "the manifest's surfaces entry is not an object"
+        for name, surface in surfaces.items():
             if not images_readable(os.path.join(self.frames_dir, surface)):
                 return f"surface texture {surface} of rigid {name} unreadable"
         air = files.get("air")
