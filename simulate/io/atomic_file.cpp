@@ -17,8 +17,10 @@ void commit_temporary(const std::filesystem::path& temporary, const std::filesys
   std::error_code ec;
   std::filesystem::rename(temporary, path, ec);
   if (ec) {
+    // The reason is taken before the clean-up, which reuses (and clears) ec.
+    const std::string reason = ec.message();
     std::filesystem::remove(temporary, ec);
-    throw std::runtime_error(path.string() + ": cannot move the finished file into place: " + ec.message());
+    throw std::runtime_error(path.string() + ": cannot move the finished file into place: " + reason);
   }
 }
 

@@ -1,8 +1,11 @@
 // PLY round trip and damaged-file errors.
 #include <gtest/gtest.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "ply.h"
 
@@ -55,6 +58,29 @@ TEST(Ply, WritingReplacesAtomically) {
   write_ply(f, d);
   for (const auto& e : fs::directory_iterator(f.parent_path()))
     EXPECT_EQ(e.path().filename().string().find("dewpoint_ply_atomic.ply.tmp"), std::string::npos) << "temporary left behind";
+}
+
+// A folder where the file goes: the error names the file and gives the
+// operating system's reason (EISDIR), and nothing is left behind.
+TEST(Ply, FailedRenameNamesTheSystemsReason) {
+  const fs::path dir = fs::temp_directory_path() / "dewpoint_ply_rename_blocked";
+  fs::remove_all(dir);
+  const fs::path f = dir / "blocked.ply";
+  fs::create_directories(f);
+  PlyData d;
+  d.vertex_count = 1;
+  d.add("x", PlyType::Float32, {1});
+  try {
+    write_ply(f, d);
+    ADD_FAILURE() << "write_ply over a folder succeeded";
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(f.string()), std::string::npos) << message;
+    EXPECT_NE(message.find(std::strerror(EISDIR)), std::string::npos) << message;
+  }
+  EXPECT_TRUE(fs::is_directory(f));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "temporary left behind";
+  fs::remove_all(dir);
 }
 
 }  // namespace

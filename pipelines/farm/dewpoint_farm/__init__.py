@@ -1,0 +1,1 @@
+"""Render-farm submission for dewpoint (pipelines/farm/submit, docs/farm.md)."""
