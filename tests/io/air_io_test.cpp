@@ -1,5 +1,6 @@
 // The scene's air section (docs/scene-format.md) and the air frame's OpenVDB
 // file (docs/file-formats.md).
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <openvdb/openvdb.h>
@@ -25,7 +26,7 @@ nlohmann::json scene_with_air(const nlohmann::json& air) {
 }
 
 fs::path write_scene(const nlohmann::json& doc, const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "dewpoint-air-io-test";
+  const fs::path dir = fs::temp_directory_path() / ("dewpoint-air-io-test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path file = dir / name;
   std::ofstream(file) << doc.dump(2);
@@ -141,7 +142,7 @@ TEST(air_Vdb, GridsLandInWorldSpaceWithTheCellsValues) {
   s.v.resize(s.grid.face_count(1));
   s.w.resize(s.grid.face_count(2));
   for (std::size_t f = 0; f < s.u.size(); ++f) s.u[f] = 0.1f * f;
-  const fs::path file = fs::temp_directory_path() / "dewpoint-air-io-test" / "air.0003.vdb";
+  const fs::path file = fs::temp_directory_path() / ("dewpoint-air-io-test-" + std::to_string(::getpid())) / "air.0003.vdb";
   fs::create_directories(file.parent_path());
   write_air_frame(file, s, "test");
 

@@ -1,4 +1,5 @@
 // The scene's coupling section (docs/scene-format.md, simulation.coupling).
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -17,7 +18,7 @@ fs::path scene_with_coupling(const nlohmann::json& coupling, const std::string& 
   nlohmann::json doc = nlohmann::json::parse(in);
   doc["simulation"]["rigids"][0]["mesh"] = (fs::path(DEWPOINT_SOURCE_DIR) / "assets/meshes/tray.obj").string();
   doc["simulation"]["coupling"] = coupling;
-  const fs::path dir = fs::temp_directory_path() / "dewpoint-coupling-io-test";
+  const fs::path dir = fs::temp_directory_path() / ("dewpoint-coupling-io-test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / name) << doc.dump(2);
   return dir / name;

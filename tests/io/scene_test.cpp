@@ -1,5 +1,6 @@
 // Scene validation: every error names the file and the key, with what was
 // expected and what was found.
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -21,7 +22,7 @@ nlohmann::json demo_document() {
 
 // Writes the document beside the demo scene so relative mesh paths resolve.
 fs::path write_scene(const nlohmann::json& doc, const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / "dewpoint-scene-test" / "scenes";
+  fs::path dir = fs::temp_directory_path() / ("dewpoint-scene-test-" + std::to_string(::getpid())) / "scenes";
   fs::create_directories(dir);
   fs::create_directories(dir.parent_path() / "meshes");
   fs::copy_file(fs::path(DEWPOINT_SOURCE_DIR) / "assets/meshes/tray.obj", dir.parent_path() / "meshes/tray.obj",
@@ -109,7 +110,7 @@ TEST(Scene, RigidWithoutRenderMaterialIsRejected) {
 }
 
 TEST(Scene, InvalidJsonNamesTheFile) {
-  fs::path file = fs::temp_directory_path() / "dewpoint-scene-test" / "broken.json";
+  fs::path file = fs::temp_directory_path() / ("dewpoint-scene-test-" + std::to_string(::getpid())) / "broken.json";
   fs::create_directories(file.parent_path());
   std::ofstream(file) << "{ \"name\": ";
   try {

@@ -1,6 +1,7 @@
 // Scene keys of a rigid's surface textures (docs/scene-format.md) and the
 // setup made from them: errors name the file and the key with what was
 // expected and found.
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -22,7 +23,7 @@ nlohmann::json demo_with_texture(const nlohmann::json& texture) {
 }
 
 fs::path write_scene(const nlohmann::json& doc, const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / "dewpoint-surface-scene-test" / "scenes";
+  fs::path dir = fs::temp_directory_path() / ("dewpoint-surface-scene-test-" + std::to_string(::getpid())) / "scenes";
   fs::create_directories(dir.parent_path() / "meshes");
   fs::create_directories(dir);
   fs::copy_file(fs::path(DEWPOINT_SOURCE_DIR) / "assets/meshes/tray.obj", dir.parent_path() / "meshes/tray.obj",

@@ -1,6 +1,7 @@
 #pragma once
 // Meshes for the surface-atlas tests, written as OBJ files here and loaded
 // back through assimp like any asset.
+#include <unistd.h>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -12,7 +13,7 @@
 namespace dp::io::test {
 
 inline std::filesystem::path test_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / "dewpoint-surface-io-test" / name;
+  auto dir = std::filesystem::temp_directory_path() / ("dewpoint-surface-io-test-" + std::to_string(::getpid())) / name;
   std::filesystem::create_directories(dir);
   return dir;
 }
