@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs dewpoint's build and run dependencies from Debian packages
-# (clang and its runtime only for the libFuzzer targets, `make fuzz`).
+# (clang and its runtime only for the libFuzzer targets, `make fuzz`;
+# gnuplot, the DejaVu fonts and python3 for `make figures` and
+# pipelines/make-assets.py).
 # Idempotent: when everything is present it prints nothing and returns at once.
 set -euo pipefail
 
@@ -10,6 +12,7 @@ packages=(
   libtbb-dev libassimp-dev libembree-dev libopenimageio-dev openimageio-tools
   libopenexr-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev libboost-dev
   clang libclang-rt-14-dev libomp-dev
+  gnuplot-nox fonts-dejavu-core python3
 )
 
 # The CPU backend compiles CCCL's Thrust with g++. It comes with the CUDA
