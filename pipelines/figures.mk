@@ -16,6 +16,9 @@ FIGURE_SCENES ?= drop_notex drop sca_logo_tex sca_logo glass contact_angles
 TABLE1_SCENES ?= drop_notex drop sca_logo_tex sca_logo glass
 PRESET_ARG := $(if $(filter preview,$(QUALITY)),--preset preview)
 PYTHON ?= python3
+# Several tools at once (make -j) on few cores: OpenMP threads must sleep, not spin, while they wait.
+OMP_WAIT_POLICY ?= PASSIVE
+export OMP_WAIT_POLICY
 # Quiet tools; make prints the commands.
 TOOL_FLAGS ?= --quiet
 
