@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Data behind the figure pipeline's plots and table (pipelines/figures.mk).
 
+  figure_data.py assets SCENE_FILE          the meshes and images a scene names (make prerequisites)
   figure_data.py ledger FRAMES_DIR           per-frame water ledger as a gnuplot table on stdout
   figure_data.py table1 OUT.md NAME=STATS_DIR ...   our Table-1 timings next to the paper's
 
@@ -35,6 +36,21 @@ def ledger(frames_dir):
         print("%.6f %.9e %.9e %.9e %.9e %.9e %.9e %.3e" % (
             frame["time_s"], w["liquid_kg"], w["texels_kg"], w["vapor_kg"], w["liquid_to_air_kg"],
             -w["texels_to_air_kg"], w["texels_to_liquid_kg"], w["drift_kg"]))
+
+
+def assets(scene_file):
+    """The mesh and image files a scene names, in its body or any preset: its
+    simulation's inputs besides the file itself (for make's prerequisites)."""
+    with open(scene_file) as f:
+        doc = json.load(f)
+    base = os.path.dirname(os.path.abspath(scene_file))
+    found = set()
+    for part in [doc] + list(doc.get("presets", {}).values()):
+        for rigid in part.get("simulation", {}).get("rigids", []):
+            for path in (rigid.get("mesh"), rigid.get("texture", {}).get("max_mass_image")):
+                if isinstance(path, str):
+                    found.add(os.path.normpath(os.path.join(base, path)))
+    print(" ".join(sorted(found)))
 
 
 def cpu_model():
@@ -98,7 +114,9 @@ def table1(out, runs, note):
 
 
 def main(argv):
-    if len(argv) >= 2 and argv[0] == "ledger":
+    if len(argv) >= 2 and argv[0] == "assets":
+        assets(argv[1])
+    elif len(argv) >= 2 and argv[0] == "ledger":
         ledger(argv[1])
     elif len(argv) >= 3 and argv[0] == "table1":
         note = os.environ.get("TABLE1_NOTE", "")

@@ -41,15 +41,15 @@ FIG4_FRAME_final   := 24
 
 frames_of = $(FRAMES_$(QUALITY)_$(1))
 pad4 = $(shell printf %04d $(1))
-# Inputs of a scene's simulation: the file, the meshes and images it names, the simulator.
-ASSETS := $(wildcard $(ROOT)/assets/meshes/*) $(wildcard $(ROOT)/assets/images/*)
+# Inputs of a scene's simulation besides the file: the meshes and images it names.
+assets_of = $(shell $(PYTHON) $(ROOT)/pipelines/figure_data.py assets $(SCENES_DIR)/$(1).json)
 
 .PHONY: figure-files figures-clean
 .DELETE_ON_ERROR:
 
 # simulate: one target per scene; the stamp is written only after success.
 define scene_rules
-$(FIGURES)/$(1)/simulated.stamp: $(SCENES_DIR)/$(1).json $(ASSETS) $(SIMULATE)
+$(FIGURES)/$(1)/simulated.stamp: $(SCENES_DIR)/$(1).json $(call assets_of,$(1)) $(SIMULATE)
 	@mkdir -p $(FIGURES)/$(1)
 	$(SIMULATE) $(SCENES_DIR)/$(1).json -o $(FIGURES)/$(1) $(PRESET_ARG) $(TOOL_FLAGS) > $(FIGURES)/$(1)/simulate.log
 	@touch $$@
@@ -89,7 +89,7 @@ $(FIGURES)/timing/$(1).stamp: $(FIGURES)/$(1)/simulated.stamp
 	@mkdir -p $(FIGURES)/timing && touch $$@
 else
 TIMING_DIR_$(1) := $(FIGURES)/timing/$(1)
-$(FIGURES)/timing/$(1).stamp: $(SCENES_DIR)/$(1).json $(ASSETS) $(SIMULATE)
+$(FIGURES)/timing/$(1).stamp: $(SCENES_DIR)/$(1).json $(call assets_of,$(1)) $(SIMULATE)
 	@mkdir -p $(FIGURES)/timing/$(1)
 	$(SIMULATE) $(SCENES_DIR)/$(1).json -o $(FIGURES)/timing/$(1) --preset table1 $(TOOL_FLAGS) > $(FIGURES)/timing/$(1)/simulate.log
 	@touch $$@

@@ -106,16 +106,19 @@ def glass(name, spacing, inner_radius, height, wall, bottom):
 
 
 def logo(name, size):
-    """m_t^max of the mirror (paper Fig. 5): 1 everywhere but 0.1 inside the
-    letters, so the impregnated logo fogs first."""
+    """m_t^max of the mirror (paper Fig. 5, 7): 1 inside the letters (the
+    impregnated logo holds much water), 0.0005 around them (16 bits per
+    channel keep that apart from 0): the surroundings fog at once while the
+    letters stay clear, and only the letters can gather the mass of whole
+    particles (Fig. 7)."""
     path = os.path.join(IMAGES, name)
     font = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf"
     if not os.path.exists(font):
         sys.exit("make-assets: %s missing (apt-get install fonts-dejavu-core; pipelines/install-deps.sh)" % font)
     text = size * 2 // 5
-    subprocess.run(["oiiotool", "--create", "%dx%d" % (size, size), "1", "--fill:color=1", "%dx%d" % (size, size),
-                    "--text:x=%d:y=%d:size=%d:color=-0.9:font=%s:xalign=center:yalign=center" % (size // 2, size // 2, text, font),
-                    "SCA", "--clamp:min=0:max=1", "-d", "uint8", "-o", path], check=True)
+    subprocess.run(["oiiotool", "--create", "%dx%d" % (size, size), "1", "--fill:color=0.0005", "%dx%d" % (size, size),
+                    "--text:x=%d:y=%d:size=%d:color=0.9995:font=%s:xalign=center:yalign=center" % (size // 2, size // 2, text, font),
+                    "SCA", "--clamp:min=0:max=1", "-d", "uint16", "-o", path], check=True)
     print("make-assets: wrote", os.path.relpath(path, ROOT))
 
 
