@@ -60,12 +60,12 @@ $(FIGURES)/$(1)/ledger.dat: $(FIGURES)/$(1)/simulated.stamp $(ROOT)/pipelines/fi
 $(FIGURES)/$(1)/water.png: $(FIGURES)/$(1)/ledger.dat $(ROOT)/pipelines/plot-ledger.gp
 	gnuplot -e "data='$$<'; scene='$(1)'; water='$$@'; transfers='$(FIGURES)/$(1)/transfers.png'" $(ROOT)/pipelines/plot-ledger.gp
 
-$(FIGURES)/$(1)/transfers.png: $(FIGURES)/$(1)/water.png
+# The renderer writes beauty.NNNN.png with the EXR: rules name the EXR, recipes read the PNG.
+$(FIGURES)/$(1)/contact_sheet.png: $(foreach f,$(call frames_of,$(1)),$(FIGURES)/$(1)/images/beauty.$(call pad4,$(f)).exr)
+	oiiotool $$(^:.exr=.png) --mosaic:pad=4 $(words $(call frames_of,$(1)))x1 -o $$@
 
-$(FIGURES)/$(1)/contact_sheet.png: $(foreach f,$(call frames_of,$(1)),$(FIGURES)/$(1)/images/beauty.$(call pad4,$(f)).png)
-	oiiotool $$^ --mosaic:pad=4 $(words $(call frames_of,$(1)))x1 -o $$@
-
-FIGURE_FILES += $(FIGURES)/$(1)/contact_sheet.png $(FIGURES)/$(1)/water.png $(FIGURES)/$(1)/transfers.png
+# water.png's recipe writes transfers.png too.
+FIGURE_FILES += $(FIGURES)/$(1)/contact_sheet.png $(FIGURES)/$(1)/water.png
 $(foreach f,$(call frames_of,$(1)),$(eval $(call frame_rules,$(1),$(call pad4,$(f)),$(f),meshes,images,)))
 endef
 
@@ -76,8 +76,6 @@ $(FIGURES)/$(1)/$(4)/liquid.$(2).ply: $(FIGURES)/$(1)/simulated.stamp $(MESH)
 
 $(FIGURES)/$(1)/$(5)/beauty.$(2).exr: $(FIGURES)/$(1)/$(4)/liquid.$(2).ply $(SCENES_DIR)/$(1).json $(RENDER)
 	$(RENDER) $(SCENES_DIR)/$(1).json --frames-dir $(FIGURES)/$(1)/frames --meshes-dir $(FIGURES)/$(1)/$(4) -o $(FIGURES)/$(1)/$(5) --frames $(3) $(TOOL_FLAGS)
-
-$(FIGURES)/$(1)/$(5)/beauty.$(2).png: $(FIGURES)/$(1)/$(5)/beauty.$(2).exr
 endef
 
 # Table 1: the paper-resolution scenes timed for a few steps (even in preview) through their
@@ -101,14 +99,14 @@ $(foreach s,$(TABLE1_SCENES),$(eval $(call timing_rules,$(s))))
 
 # Paper Fig. 3: the single-particle drops plain (Eq. 19) and corrected (Eq. 20-24), one above the other.
 $(eval $(call frame_rules,contact_angles,0000,0,meshes_uncorrected,images_uncorrected,--no-correction))
-$(FIGURES)/fig3_single_particle.png: $(FIGURES)/contact_angles/images_uncorrected/beauty.0000.png $(FIGURES)/contact_angles/images/beauty.0000.png
-	oiiotool $^ --mosaic:pad=4 1x2 -o $@
+$(FIGURES)/fig3_single_particle.png: $(FIGURES)/contact_angles/images_uncorrected/beauty.0000.exr $(FIGURES)/contact_angles/images/beauty.0000.exr
+	oiiotool $(^:.exr=.png) --mosaic:pad=4 1x2 -o $@
 
 # Paper Fig. 4: a drop frame meshed without (left) and with (right) the corrections.
 FIG4 := $(call pad4,$(FIG4_FRAME_$(QUALITY)))
 $(eval $(call frame_rules,drop,$(FIG4),$(FIG4_FRAME_$(QUALITY)),meshes_uncorrected,images_uncorrected,--no-correction))
-$(FIGURES)/fig4_contact_angles.png: $(FIGURES)/drop/images_uncorrected/beauty.$(FIG4).png $(FIGURES)/drop/images/beauty.$(FIG4).png
-	oiiotool $^ --mosaic:pad=4 2x1 -o $@
+$(FIGURES)/fig4_contact_angles.png: $(FIGURES)/drop/images_uncorrected/beauty.$(FIG4).exr $(FIGURES)/drop/images/beauty.$(FIG4).exr
+	oiiotool $(^:.exr=.png) --mosaic:pad=4 2x1 -o $@
 
 $(FIGURES)/table1.md: $(foreach s,$(TABLE1_SCENES),$(FIGURES)/timing/$(s).stamp) $(ROOT)/pipelines/figure_data.py
 	TABLE1_NOTE="$(if $(filter final,$(QUALITY)),Timed over the whole final run.,Timed over the first steps of each scene (its table1 preset) while the figures themselves ran at preview quality; the per-step time is what Table 1 compares.)" \
