@@ -130,10 +130,15 @@ def main():
     half = 71 * s / 2
     quad("drop_plate.obj", "hot plate of the drop scenes, 71 x 71 particle spacings of 2 mm, normal +y",
          (-half, 0.0, half), (2 * half, 0.0, 0.0), (0.0, 0.0, -2 * half))
-    # Mirror (Fig. 5, 7): s = 2 mm; 166 x 166 spacings -> 167^2 = 27889 (paper: 28 K), facing +z.
-    half = 166 * s / 2
-    quad("mirror.obj", "mirror of the SCA logo scenes, 166 x 166 particle spacings of 2 mm, normal +z",
+    # Mirror (Fig. 5, 7): s = 2 mm; 136 x 136 spacings -> 137^2 = 18769, facing +z, and a tray
+    # below it that catches the drops running off it, 166 x 60 spacings -> 167 x 61 = 10187:
+    # 28956 rigid particles together (paper: 28 K).
+    half = 136 * s / 2
+    quad("mirror.obj", "mirror of the SCA logo scenes, 136 x 136 particle spacings of 2 mm, normal +z",
          (-half, 0.0, 0.0), (2 * half, 0.0, 0.0), (0.0, 2 * half, 0.0))
+    half = 166 * s / 2
+    quad("mirror_tray.obj", "tray under the mirror of the SCA logo scenes, 166 x 60 particle spacings of 2 mm, normal +y",
+         (-half, -6 * s, 30 * s), (2 * half, 0.0, 0.0), (0.0, 0.0, -60 * s))
     # Glass (Fig. 8): s = 1 mm.
     s = 0.001
     glass("glass.obj", s, inner_radius=30 * s, height=190 * s, wall=2 * s, bottom=6 * s)
