@@ -86,12 +86,13 @@ TEST_F(PresetCli, UnknownPresetIsRefusedByEveryToolBeforeAnyOutput) {
 
 TEST_F(PresetCli, TextureOnlySceneRunsWithoutLiquid) {
   // The paper's SCA Logo Tex: no liquid particles, water only in the mirror's texture.
+  // The scene's rigids with a small texture: a preset replaces the whole array.
+  nlohmann::json rigids = read_json(kSource / "assets/scenes/sca_logo_tex.json")["simulation"]["rigids"];
+  for (auto& r : rigids) r["mesh"] = (kSource / "assets/scenes" / r["mesh"].get<std::string>()).lexically_normal().string();
+  rigids[0]["texture"] = {{"resolution", {64, 64}}};
   const fs::path scene = copy_scene(
       "sca_logo_tex",
-      {{"short", {{"simulation", {{"duration_s", 0.02}, {"frame_rate_hz", 100}, {"air", {{"resolution", 32}}},
-                                  {"rigids", {{{"name", "mirror"}, {"mesh", (kSource / "assets/meshes/mirror.obj").string()},
-                                               {"temperature_c", 4}, {"hold_temperature", true},
-                                               {"texture", {{"resolution", {64, 64}}}}}}}}}}}});
+      {{"short", {{"simulation", {{"duration_s", 0.02}, {"frame_rate_hz", 100}, {"air", {{"resolution", 32}}}, {"rigids", rigids}}}}}});
   const auto sim = test::run_command(std::string(DEWPOINT_SIMULATE) + " " + scene.string() + " -o " + (work_ / "shot").string() +
                                      " --preset short --quiet");
   ASSERT_EQ(sim.exit_code, 0) << sim.output;
