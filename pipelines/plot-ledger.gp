@@ -1,7 +1,7 @@
 # Plots a scene's water ledger (pipelines/figure_data.py ledger) with gnuplot.
 # Call: gnuplot -e "data='ledger.dat'; scene='drop'; water='water.png'; transfers='transfers.png'" plot-ledger.gp
-set terminal pngcairo size 800,450 font "DejaVu Sans,11"
-set key outside right top
+set terminal pngcairo noenhanced size 800,450 font "DejaVu Sans,11"
+set key inside right center box opaque
 set xlabel "simulated time (s)"
 set grid
 set output water
