@@ -5,6 +5,8 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "cli_common.h"
 #include "dewpoint/version.h"
@@ -18,6 +20,7 @@ struct Options {
   int threads = 0;
   bool quiet = false, no_correction = false, check = false;
   double contact_angle_deg = 0;
+  std::optional<std::string> preset;
 };
 
 int run(const Options& opt) {
@@ -31,6 +34,7 @@ int run(const Options& opt) {
   job.no_correction = opt.no_correction;
   job.contact_angle_deg = opt.contact_angle_deg;
   job.check = opt.check;
+  job.preset = opt.preset;
   // The limit lives as long as this object: for the whole run.
   std::unique_ptr<tbb::global_control> limit;
   if (opt.threads > 0)
@@ -64,6 +68,7 @@ int main(int argc, char** argv) {
   app.add_option("--contact-angle", opt.contact_angle_deg,
                  "static contact angle alpha_base in degrees for every rigid (default: the scene's mesh section)")
       ->check(CLI::Range(0.0, 180.0) & CLI::PositiveNumber);
+  app.add_option("--preset", opt.preset, "scene preset (default: the one the frames were simulated with)");
   app.add_flag("--check", opt.check,
                "check every mesh with CGAL (closed, manifold, oriented, self-intersections, volume, area); exit code 1 "
                "if one fails");

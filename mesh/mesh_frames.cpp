@@ -87,7 +87,7 @@ fs::path scene_file_of(const io::FramesManifest& manifest, const fs::path& frame
 MeshFramesResult mesh_frames(const MeshFramesOptions& options) {
   const io::FramesManifest manifest = io::read_manifest(options.frames_dir);
   const fs::path scene_file = scene_file_of(manifest, options.frames_dir);
-  const io::Scene scene = io::load_scene(scene_file);
+  const io::Scene scene = io::load_scene(scene_file, options.preset.value_or(io::recorded_preset(manifest)));
   SurfaceParameters parameters;
   try {
     parameters = surface_parameters(manifest.particle_spacing_m, scene.mesh, options.voxel_size, options.voxels_per_radius);

@@ -2,6 +2,8 @@
 // dewpoint-mesh's work: every selected frame of a frames folder to a liquid
 // mesh and its sidecar in the output folder.
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include "cli_common.h"
 
@@ -17,6 +19,7 @@ struct MeshFramesOptions {
   bool no_correction = false;         // the plain Eq. 19 surface, whatever the scene says
   double contact_angle_deg = 0;       // > 0: alpha_base of every rigid
   bool check = false;                 // CGAL checks of every mesh, recorded in the sidecar
+  std::optional<std::string> preset;  // scene preset; unset: the one the manifest records
 };
 
 struct MeshFramesResult {

@@ -2,7 +2,9 @@
 # Installs dewpoint's build and run dependencies from Debian packages
 # (clang and its runtime only for the libFuzzer targets, `make fuzz`; Slurm,
 # munge and python3 for the render farm, pipelines/farm; jq and assimp-utils
-# for its test, which checks the farm's files with tools that are not ours).
+# for its test, which checks the farm's files with tools that are not ours;
+# gnuplot, the DejaVu fonts and python3 for `make figures` and
+# pipelines/make-assets.py).
 # Idempotent: when everything is present it prints nothing and returns at once.
 set -euo pipefail
 
@@ -12,7 +14,8 @@ packages=(
   libtbb-dev libassimp-dev libembree-dev libopenimageio-dev openimageio-tools jq
   libopenexr-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev libboost-dev
   clang libclang-rt-14-dev libomp-dev
-  slurm-wlm munge python3 jq assimp-utils
+  slurm-wlm munge python3 assimp-utils
+  gnuplot-nox fonts-dejavu-core
 )
 
 # The CPU backend compiles CCCL's Thrust with g++. It comes with the CUDA

@@ -41,6 +41,7 @@ struct Options {
   std::string aovs;
   bool no_wet_paths = false;
   bool quiet = false;
+  std::optional<std::string> preset;
 };
 
 const char* camera_name(dp::io::CameraModel m) { return m == dp::io::CameraModel::ThinLens ? "thin_lens" : "pinhole"; }
@@ -118,7 +119,8 @@ std::vector<FrameJob> frame_jobs(const Options& opt) {
 int run(const Options& opt) {
   // Everything that can be wrong with the input is found before any output
   // exists: scene, overrides, manifest, meshes, environment map.
-  const dp::io::Scene scene = dp::io::load_scene(opt.scene);
+  const std::string preset = opt.preset.value_or(dp::io::recorded_preset(dp::io::read_manifest(opt.frames_dir)));
+  const dp::io::Scene scene = dp::io::load_scene(opt.scene, preset);
   const dp::io::RenderSettings settings = settings_with_overrides(scene, opt);
   const std::vector<FrameJob> jobs = frame_jobs(opt);
   const std::vector<dp::render::SceneObject> rigids = dp::render::load_rigid_objects(scene, opt.frames_dir);
@@ -194,6 +196,7 @@ int main(int argc, char** argv) {
   app.add_option("--threads", opt.threads, "CPU threads (0: all); images are identical for any count")
       ->check(CLI::Range(0, 1 << 16));
   app.add_option("--aov", opt.aovs, "auxiliary EXR channels: comma-separated albedo,normal,depth, or none (default: the scene's render.aovs)");
+  app.add_option("--preset", opt.preset, "scene preset (default: the one the frames were simulated with)");
   app.add_flag("--no-wet-paths", opt.no_wet_paths, "ignore the surface textures' wetting history");
   app.add_flag("--quiet", opt.quiet, "no progress output");
   try {

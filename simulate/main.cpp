@@ -26,13 +26,14 @@ struct Options {
   std::string device = "cpu";
   int threads = 0;
   std::string frames;
+  std::string preset;
   bool quiet = false;
 };
 
 int run(const Options& opt) {
   // Everything that can be wrong with the input is found before any output
   // exists: scene, meshes, frame range, device.
-  dp::io::Scene scene = dp::io::load_scene(opt.scene);
+  dp::io::Scene scene = dp::io::load_scene(opt.scene, opt.preset);
   std::vector<dp::io::RigidAtlas> atlases;
   dp::SimulationSetup setup = dp::io::make_simulation_setup(scene, &atlases);
   dp::io::FrameRange range = opt.frames.empty() ? dp::io::FrameRange{} : dp::io::parse_frame_range(opt.frames);
@@ -44,7 +45,9 @@ int run(const Options& opt) {
   if (range.first > last_frame)
     throw std::invalid_argument("--frames: first frame " + std::to_string(range.first) + " is past the scene's last frame " +
                                 std::to_string(last_frame_of_scene));
-  if (setup.liquid_position.empty()) throw dp::io::SceneError(scene.file.string() + ": simulation.liquid_blocks: no liquid particles");
+  // Without liquid only textures can hold water (the paper's texture-only SCA Logo Tex).
+  if (setup.liquid_position.empty() && setup.surfaces.empty())
+    throw dp::io::SceneError(scene.file.string() + ": simulation.liquid_blocks: no liquid particles and no textured rigid");
 
   std::unique_ptr<dp::Simulation> simulation = dp::make_simulation(exec, setup);
 
@@ -61,6 +64,7 @@ int run(const Options& opt) {
   manifest.extra["generator"] = std::string("dewpoint-simulate ") + dp::kVersion;
   manifest.extra["settings"] = {{"device", opt.device}, {"threads", exec.threads}, {"frames", opt.frames}};
   manifest.extra["scene"] = scene.document;
+  if (!scene.preset.empty()) manifest.extra["preset"] = scene.preset;
   dp::io::write_rigid_particles(frames_dir / manifest.rigid_particles_file, simulation->rigid_particles(),
                                 simulation->rigid_volumes(), simulation->rigid_temperatures(), comment);
   for (std::size_t r = 0; r < atlases.size(); ++r) {
@@ -149,6 +153,7 @@ int main(int argc, char** argv) {
   app.add_option("--device", opt.device, "cpu or cuda")->check(CLI::IsMember({"cpu", "cuda"}));
   app.add_option("--threads", opt.threads, "CPU threads (0: all)")->check(CLI::NonNegativeNumber);
   app.add_option("--frames", opt.frames, "frames to write, A-B (inclusive)");
+  app.add_option("--preset", opt.preset, "apply the scene's presets.NAME (a JSON merge patch, e.g. preview)");
   app.add_flag("--quiet", opt.quiet, "no progress output");
   try {
     app.parse(argc, argv);

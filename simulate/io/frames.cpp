@@ -156,4 +156,9 @@ FramesManifest read_manifest(const std::filesystem::path& frames_dir) {
   }
 }
 
+std::string recorded_preset(const FramesManifest& manifest) {
+  const auto it = manifest.extra.find("preset");
+  return it != manifest.extra.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
 }  // namespace dp::io

@@ -56,4 +56,8 @@ void write_manifest(const std::filesystem::path& frames_dir, const FramesManifes
 // Throws std::runtime_error naming the file and key when it is not a manifest.
 FramesManifest read_manifest(const std::filesystem::path& frames_dir);
 
+// The scene preset the frames were simulated with (manifest key `preset`);
+// empty when none was.
+std::string recorded_preset(const FramesManifest& manifest);
+
 }  // namespace dp::io

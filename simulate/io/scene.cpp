@@ -1,4 +1,5 @@
 #include "scene.h"
+#include "scene_presets.h"
 
 #include <cctype>
 #include <cmath>
@@ -199,6 +200,33 @@ AirSectionSettings read_air(JsonObject o, const SimulationSettings& sim) {
   return a;
 }
 
+// The shape of a liquid block; its bounding box goes to min_m/max_m.
+LiquidBlock read_liquid_region(JsonObject& b) {
+  LiquidBlock block;
+  const std::string shape = b.string("shape", "box");
+  if (shape == "box") {
+    block.min_m = b.vec3("min_m");
+    block.max_m = b.vec3("max_m");
+    return block;
+  }
+  if (shape != "sphere" && shape != "cylinder")
+    throw b.error("shape", "expected \"box\", \"sphere\" or \"cylinder\", found \"" + shape + "\"");
+  block.shape = shape == "sphere" ? LiquidShape::Sphere : LiquidShape::Cylinder;
+  block.center_m = b.vec3("center_m");
+  block.radius_m = positive(b, "radius_m", b.number("radius_m"));
+  const double r = block.radius_m;
+  const Vec3d& c = block.center_m;
+  if (block.shape == LiquidShape::Sphere) {
+    block.min_m = {c[0] - r, c[1] - r, c[2] - r};
+    block.max_m = {c[0] + r, c[1] + r, c[2] + r};
+  } else {
+    block.height_m = positive(b, "height_m", b.number("height_m"));
+    block.min_m = {c[0] - r, c[1], c[2] - r};
+    block.max_m = {c[0] + r, c[1] + block.height_m, c[2] + r};
+  }
+  return block;
+}
+
 SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& scene_dir) {
   SimulationSettings s;
   JsonObject domain = o.object("domain");
@@ -232,9 +260,7 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
   }
 
   for (JsonObject b : o.objects("liquid_blocks")) {
-    LiquidBlock block;
-    block.min_m = b.vec3("min_m");
-    block.max_m = b.vec3("max_m");
+    LiquidBlock block = read_liquid_region(b);
     block.velocity_m_s = b.vec3("velocity_m_s", block.velocity_m_s);
     for (int a = 0; a < 3; ++a)
       if (!(block.min_m[a] < block.max_m[a])) throw b.error("max_m", "every component must exceed min_m's");
@@ -337,9 +363,18 @@ std::vector<std::string> rigid_names(const SimulationSettings& s) {
   return names;
 }
 
+void read_sections(Scene& scene, const std::filesystem::path& file) {
+  JsonObject top(scene.document, "", file);
+  scene.name = top.string("name", scene.file.stem().string());
+  scene.simulation = read_simulation(top.object("simulation"), scene.file.parent_path());
+  scene.mesh = read_mesh(top.optional_object("mesh"), scene.simulation);
+  scene.render = read_render_settings(top.object("render"), rigid_names(scene.simulation), scene.file.parent_path());
+  top.finish();
+}
+
 }  // namespace
 
-Scene load_scene(const std::filesystem::path& file) {
+Scene load_scene(const std::filesystem::path& file, const std::string& preset) {
   Scene scene;
   scene.file = std::filesystem::absolute(file).lexically_normal();
   std::ifstream in(scene.file);
@@ -349,12 +384,15 @@ Scene load_scene(const std::filesystem::path& file) {
   } catch (const nlohmann::json::exception& e) {  // parse errors, and numbers beyond double (1e400)
     throw SceneError(file.string() + ": not valid JSON: " + e.what());
   }
-  JsonObject top(scene.document, "", file);
-  scene.name = top.string("name", scene.file.stem().string());
-  scene.simulation = read_simulation(top.object("simulation"), scene.file.parent_path());
-  scene.mesh = read_mesh(top.optional_object("mesh"), scene.simulation);
-  scene.render = read_render_settings(top.object("render"), rigid_names(scene.simulation), scene.file.parent_path());
-  top.finish();
+  scene.document = apply_preset(scene.document, preset, file);
+  scene.preset = preset;
+  try {
+    read_sections(scene, file);
+  } catch (const SceneError& e) {
+    // The key is in the patched document: say which patch made it.
+    if (preset.empty()) throw;
+    throw SceneError(std::string(e.what()) + " (with preset '" + preset + "')");
+  }
   return scene;
 }
 

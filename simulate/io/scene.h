@@ -22,8 +22,16 @@ using Rgb = std::array<double, 3>;
 inline constexpr double kZeroCelsiusInKelvin = 273.15;  // the one place Celsius meets kelvin
 inline double celsius_to_kelvin(double c) { return c + kZeroCelsiusInKelvin; }
 
+// A region filled with liquid particles on a cubic lattice: a box, or the
+// lattice points of the bounding box [min_m, max_m] that lie inside a sphere
+// or an upright (y-axis) cylinder (a drop, a glass's content).
+enum class LiquidShape { Box, Sphere, Cylinder };
+
 struct LiquidBlock {
+  LiquidShape shape = LiquidShape::Box;
   Vec3d min_m, max_m;
+  Vec3d center_m{0, 0, 0};  // sphere: centre; cylinder: centre of its base
+  double radius_m = 0, height_m = 0;
   Vec3d velocity_m_s{0, 0, 0};
 };
 
@@ -144,13 +152,15 @@ struct MeshSettings {
 struct Scene {
   std::filesystem::path file;  // absolute
   std::string name;
-  nlohmann::json document;  // as read, recorded in outputs
+  std::string preset;       // the preset applied (docs/scene-format.md, "Presets"); empty: none
+  nlohmann::json document;  // as run: with the preset applied and `presets` removed; recorded in outputs
   SimulationSettings simulation;
   MeshSettings mesh;
   RenderSettings render;
 };
 
-// Parses and validates; throws SceneError naming file, key, expected and found.
-Scene load_scene(const std::filesystem::path& file);
+// Parses, applies the preset named `preset` (none when empty) and
+// validates; throws SceneError naming file, key, expected and found.
+Scene load_scene(const std::filesystem::path& file, const std::string& preset = "");
 
 }  // namespace dp::io

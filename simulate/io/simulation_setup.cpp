@@ -13,6 +13,19 @@ namespace {
 Vec3 to_vec3(const Vec3d& v) { return Vec3{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])}; }
 }  // namespace
 
+namespace {
+bool inside_shape(const LiquidBlock& block, double x, double y, double z) {
+  const double dx = x - block.center_m[0], dy = y - block.center_m[1], dz = z - block.center_m[2];
+  const double r2 = block.radius_m * block.radius_m;
+  switch (block.shape) {
+    case LiquidShape::Sphere: return dx * dx + dy * dy + dz * dz <= r2;
+    case LiquidShape::Cylinder: return dx * dx + dz * dz <= r2;  // y is inside the bounding box already
+    case LiquidShape::Box: break;
+  }
+  return true;
+}
+}  // namespace
+
 std::vector<Vec3> fill_block(const LiquidBlock& block, double spacing) {
   int n[3];
   double offset[3];
@@ -25,9 +38,11 @@ std::vector<Vec3> fill_block(const LiquidBlock& block, double spacing) {
   points.reserve(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
-      for (int i = 0; i < n[0]; ++i)
-        points.push_back(Vec3{static_cast<float>(offset[0] + i * spacing), static_cast<float>(offset[1] + j * spacing),
-                              static_cast<float>(offset[2] + k * spacing)});
+      for (int i = 0; i < n[0]; ++i) {
+        const double x = offset[0] + i * spacing, y = offset[1] + j * spacing, z = offset[2] + k * spacing;
+        if (inside_shape(block, x, y, z))
+          points.push_back(Vec3{static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)});
+      }
   return points;
 }
 

@@ -1,0 +1,122 @@
+// --preset on the three executables (docs/scene-format.md, "Presets") and
+// scenes without liquid, as users run them.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "run_command.h"
+
+namespace fs = std::filesystem;
+
+namespace dp {
+namespace {
+
+const fs::path kSource = DEWPOINT_SOURCE_DIR;
+
+nlohmann::json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+class PresetCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    work_ = fs::temp_directory_path() /
+            ("dewpoint-preset-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(work_);
+    fs::create_directories(work_);
+  }
+  // A copy of an asset scene in the work folder, its relative paths made absolute.
+  fs::path copy_scene(const std::string& name, const nlohmann::json& presets) {
+    nlohmann::json doc = read_json(kSource / "assets/scenes" / (name + ".json"));
+    const fs::path dir = kSource / "assets/scenes";
+    for (auto& r : doc["simulation"]["rigids"]) {
+      r["mesh"] = (dir / r["mesh"].get<std::string>()).lexically_normal().string();
+      if (r.contains("texture") && r["texture"].contains("max_mass_image"))
+        r["texture"]["max_mass_image"] = (dir / r["texture"]["max_mass_image"].get<std::string>()).lexically_normal().string();
+    }
+    doc["presets"] = presets;
+    const fs::path file = work_ / (name + ".json");
+    std::ofstream(file) << doc.dump(2);
+    return file;
+  }
+  fs::path work_;
+};
+
+TEST_F(PresetCli, SimulateRecordsThePresetAndMeshAndRenderApplyIt) {
+  const nlohmann::json coarse = {{"simulation", {{"particle_spacing_m", 0.025}, {"duration_s", 0.05}, {"frame_rate_hz", 20}}},
+                                 {"mesh", {{"voxels_per_radius", 1}}},
+                                 {"render", {{"resolution", {32, 18}}, {"spp", 1}}}};
+  const fs::path scene = copy_scene("demo", {{"coarse", coarse}});
+  const auto sim = test::run_command(std::string(DEWPOINT_SIMULATE) + " " + scene.string() + " -o " + (work_ / "shot").string() +
+                                     " --preset coarse --quiet");
+  ASSERT_EQ(sim.exit_code, 0) << sim.output;
+  const nlohmann::json manifest = read_json(work_ / "shot/frames/manifest.json");
+  EXPECT_EQ(manifest["preset"], "coarse");
+  EXPECT_EQ(manifest["particle_spacing_m"], 0.025);
+  EXPECT_FALSE(manifest["scene"].contains("presets"));
+
+  // The mesher takes the recorded preset: voxel = radius (0.5 spacing) / 1.
+  const auto mesh = test::run_command(std::string(DEWPOINT_MESH) + " " + (work_ / "shot/frames").string() + " -o " +
+                                      (work_ / "shot/meshes").string() + " --frames 1 --quiet");
+  ASSERT_EQ(mesh.exit_code, 0) << mesh.output;
+  EXPECT_DOUBLE_EQ(read_json(work_ / "shot/meshes/liquid.0001.json")["voxel_size_m"].get<double>(), 0.0125);
+
+  const auto render = test::run_command(std::string(DEWPOINT_RENDER) + " " + scene.string() + " --frames-dir " +
+                                        (work_ / "shot/frames").string() + " --meshes-dir " + (work_ / "shot/meshes").string() +
+                                        " -o " + (work_ / "shot/images").string() + " --frames 1 --quiet");
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  const nlohmann::json sidecar = read_json(work_ / "shot/images/beauty.0001.json");
+  EXPECT_EQ(sidecar["resolution"], nlohmann::json({32, 18}));
+  EXPECT_EQ(sidecar["spp"], 1);
+}
+
+TEST_F(PresetCli, UnknownPresetIsRefusedByEveryToolBeforeAnyOutput) {
+  const fs::path scene = copy_scene("demo", {{"preview", nlohmann::json::object()}});
+  const auto sim = test::run_command(std::string(DEWPOINT_SIMULATE) + " " + scene.string() + " -o " + (work_ / "shot").string() +
+                                     " --preset fnial --quiet");
+  EXPECT_EQ(sim.exit_code, 2);
+  EXPECT_NE(sim.output.find(scene.string() + ": presets: no preset 'fnial' (this scene has: preview)"), std::string::npos)
+      << sim.output;
+  EXPECT_FALSE(fs::exists(work_ / "shot"));
+}
+
+TEST_F(PresetCli, TextureOnlySceneRunsWithoutLiquid) {
+  // The paper's SCA Logo Tex: no liquid particles, water only in the mirror's texture.
+  // The scene's rigids with a small texture: a preset replaces the whole array.
+  nlohmann::json rigids = read_json(kSource / "assets/scenes/sca_logo_tex.json")["simulation"]["rigids"];
+  for (auto& r : rigids) r["mesh"] = (kSource / "assets/scenes" / r["mesh"].get<std::string>()).lexically_normal().string();
+  rigids[0]["texture"] = {{"resolution", {64, 64}}};
+  const fs::path scene = copy_scene(
+      "sca_logo_tex",
+      {{"short", {{"simulation", {{"duration_s", 0.02}, {"frame_rate_hz", 100}, {"air", {{"resolution", 32}}}, {"rigids", rigids}}}}}});
+  const auto sim = test::run_command(std::string(DEWPOINT_SIMULATE) + " " + scene.string() + " -o " + (work_ / "shot").string() +
+                                     " --preset short --quiet");
+  ASSERT_EQ(sim.exit_code, 0) << sim.output;
+  const nlohmann::json manifest = read_json(work_ / "shot/frames/manifest.json");
+  ASSERT_EQ(manifest["frames"].size(), 3u);
+  for (const auto& frame : manifest["frames"]) EXPECT_EQ(frame["liquid_particles"], 0);
+  // Humid air on a 4 degC mirror: water condenses into the texture and the ledger balances.
+  const auto& water = manifest["frames"].back()["water"];
+  EXPECT_GT(water["texels_kg"].get<double>(), 0.0);
+  EXPECT_LE(std::abs(water["relative_drift"].get<double>()), 1e-9);
+}
+
+TEST_F(PresetCli, SceneWithoutLiquidOrTextureIsRefused) {
+  nlohmann::json doc = read_json(kSource / "assets/scenes/demo.json");
+  doc["simulation"]["liquid_blocks"] = nlohmann::json::array();
+  doc["simulation"]["rigids"][0]["mesh"] = (kSource / "assets/meshes/tray.obj").string();
+  const fs::path scene = work_ / "dry.json";
+  std::ofstream(scene) << doc.dump(2);
+  const auto sim = test::run_command(std::string(DEWPOINT_SIMULATE) + " " + scene.string() + " -o " + (work_ / "shot").string());
+  EXPECT_EQ(sim.exit_code, 2);
+  EXPECT_NE(sim.output.find("dry.json: simulation.liquid_blocks: no liquid particles and no textured rigid"), std::string::npos)
+      << sim.output;
+  EXPECT_FALSE(fs::exists(work_ / "shot"));
+}
+
+}  // namespace
+}  // namespace dp
