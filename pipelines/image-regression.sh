@@ -34,12 +34,12 @@ WARN_ABS=0.01
 
 die() { echo "image-regression: $*" >&2; exit 2; }
 
-# Prints the fields "scene frame width height spp" of case NAME.
+# Prints the fields "scene frame width height spp preset" of case NAME.
 case_fields() {
   local name=$1
   [ -f "$CASES" ] || die "$CASES: missing"
   local line
-  line=$(awk -F'\t' -v n="$name" '$1 == n { print $2, $3, $4, $5, $6 }' "$CASES")
+  line=$(awk -F'\t' -v n="$name" '$1 == n { print $2, $3, $4, $5, $6, (NF >= 7 ? $7 : "-") }' "$CASES")
   [ -n "$line" ] || die "$CASES: no case named '$name' (cases: $(case_names | tr '\n' ' '))"
   echo "$line"
 }
@@ -52,8 +52,10 @@ done
 
 render_case() {
   local name=$1 out=$2 render_scene=${3:-}
-  local scene frame width height spp
-  read -r scene frame width height spp <<<"$(case_fields "$name")"
+  local scene frame width height spp preset
+  read -r scene frame width height spp preset <<<"$(case_fields "$name")"
+  local preset_args=()
+  [ "$preset" = "-" ] || preset_args=(--preset "$preset")
   scene=$ROOT/$scene
   [ -f "$scene" ] || die "case $name: scene $scene missing"
   render_scene=${render_scene:-$scene}
@@ -64,7 +66,7 @@ render_case() {
   # The simulation and its mesh depend only on the scene: reuse them when a
   # previous call left them (the sensitivity tests render one frame several ways).
   if [ ! -f "$out/frames/manifest.json" ] || [ "$out/frames/manifest.json" -ot "$scene" ]; then
-    "$BIN/simulate/dewpoint-simulate" "$scene" -o "$out" --frames "$frame-$frame" --quiet
+    "$BIN/simulate/dewpoint-simulate" "$scene" -o "$out" --frames "$frame-$frame" "${preset_args[@]}" --quiet
   fi
   local mesh_file
   mesh_file=$(printf '%s/meshes/liquid.%04d.ply' "$out" "$frame")

@@ -36,7 +36,7 @@ class AirCoupling {
     const MacGrid& g = air.grid();
     rigid_.build(exec, g, rigid_position);
     texels_.resize(surfaces.count());
-    for (std::size_t i = 0; i < surfaces.count(); ++i) texels_[i].prepare(exec, g, surfaces.texture(i).position);
+    for (std::size_t i = 0; i < surfaces.count(); ++i) texels_[i].prepare(exec, g, surfaces.texture(i).position, surfaces.texture(i).normal);
     temperature_change_.resize(g.cell_count());
     cell_velocity_.resize(g.cell_count());
     net_units_.resize(g.cell_count());

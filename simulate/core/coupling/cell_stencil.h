@@ -53,6 +53,23 @@ struct ComputeStencils {
   DP_HD void operator()(std::size_t s) const { trilinear_stencil(grid, position[s], pair_cell + kStencilSize * s, pair_alpha + kStencilSize * s); }
 };
 
+// A texel's stencil is taken one cell in front of it, at x_t + dx n_t: the
+// air it touches. At the texel itself, the eight cells around a thin rigid
+// (a mirror, a glass wall) are mostly the solid cells holding its particles
+// and, on a rigid lying near a cell face, air cells on its other side; one
+// cell along the normal the stencil always reaches the air on the texel's
+// own side (docs/paper-map.md, departures).
+struct ComputeStencilsInFront {
+  MacGrid grid;
+  const Vec3* position;
+  const Vec3* normal;  // unit
+  std::uint32_t* pair_cell;
+  float* pair_alpha;
+  DP_HD void operator()(std::size_t s) const {
+    trilinear_stencil(grid, position[s] + grid.dx * normal[s], pair_cell + kStencilSize * s, pair_alpha + kStencilSize * s);
+  }
+};
+
 // Surfels exchange with the air cells of their stencil, weights
 // renormalised over those. A surfel with no air cell among its eight (with
 // cells wider than two support radii, Sec. 4.2, a small drop can lie wholly

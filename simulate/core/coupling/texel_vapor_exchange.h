@@ -18,14 +18,20 @@ class TexelVaporExchange {
   using Buffer = typename Exec::template Buffer<T>;
 
  public:
-  void prepare(const Exec& exec, const MacGrid& grid, const Buffer<Vec3>& texel_position) {
+  // `texel_normal` empty: stencils at the texels themselves (tests of Alg. 2
+  // alone); otherwise one cell in front of them (ComputeStencilsInFront).
+  void prepare(const Exec& exec, const MacGrid& grid, const Buffer<Vec3>& texel_position, const Buffer<Vec3>& texel_normal = {}) {
     texels_ = texel_position.size();
     const std::size_t pairs = kStencilSize * texels_;
     pair_cell_.resize(pairs);
     pair_alpha_.resize(pairs);
     pair_eva_.resize(pairs);
     pair_cond_.resize(pairs);
-    exec.parallel_for(texels_, ComputeStencils{grid, Exec::ptr(texel_position), Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_)});
+    if (texel_normal.size() == texels_)
+      exec.parallel_for(texels_, ComputeStencilsInFront{grid, Exec::ptr(texel_position), Exec::ptr(texel_normal), Exec::ptr(pair_cell_),
+                                                        Exec::ptr(pair_alpha_)});
+    else
+      exec.parallel_for(texels_, ComputeStencils{grid, Exec::ptr(texel_position), Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_)});
     cells_.build(exec, pair_cell_, grid.cell_count());
     for (auto* b : {&cond_num_, &cond_den_}) b->resize(grid.cell_count());
     net_units_.resize(grid.cell_count());

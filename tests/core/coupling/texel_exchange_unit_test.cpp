@@ -31,6 +31,37 @@ TEST(coupling_Stencil, WeightsSumToOneAndReproduceLinearFields) {
   }
 }
 
+// A thin plate (one layer of rigid particles) in the plane y = y0, its
+// texels on both faces with normals +y and -y. The cells holding the
+// plate's particles are solid and drop out of the exchange (air_weights);
+// every other cell of a texel's stencil must lie on the texel's own side of
+// the plate, and some must be left, wherever the plate lies in its cell: on
+// a face, a quarter, half or three quarters up.
+TEST(coupling_Stencil, TexelsExchangeWithTheAirOnTheirOwnSideOfAThinPlate) {
+  const MacGrid g = mac_grid_covering(Vec3{0, 0, 0}, Vec3{0.2f, 0.2f, 0.2f}, 8);  // dx = 2.5 cm
+  for (float fraction : {0.0f, 0.25f, 0.5f, 0.75f}) {
+    const float y0 = g.origin.y + (3 + fraction) * g.dx;
+    int plate_layer, i_unused, k_unused;
+    g.cell_coords(static_cast<std::uint32_t>(g.cell(0, static_cast<int>(std::floor((y0 - g.origin.y) / g.dx)), 0)), i_unused, plate_layer,
+                  k_unused);
+    for (float side : {1.0f, -1.0f}) {
+      const Vec3 position{0.1f, y0, 0.1f}, normal{0, side, 0};
+      std::uint32_t cell[kStencilSize];
+      float alpha[kStencilSize];
+      ComputeStencilsInFront{g, &position, &normal, cell, alpha}(0);
+      float air = 0.0f;
+      for (int k = 0; k < kStencilSize; ++k) {
+        int i, j, l;
+        g.cell_coords(cell[k], i, j, l);
+        if (alpha[k] == 0.0f || j == plate_layer) continue;
+        air += alpha[k];
+        EXPECT_GT(side * (g.cell_center(i, j, l).y - y0), 0.0f) << "plate at " << fraction << " of a cell, side " << side;
+      }
+      EXPECT_GT(air, 0.25f) << "plate at " << fraction << " of a cell, side " << side;
+    }
+  }
+}
+
 // Random texels (temperatures 0..60 degC, masses, caps including 0,
 // wetting) in air of random humidity, with steps long enough that every
 // bound of Alg. 2 binds somewhere.
