@@ -62,6 +62,7 @@ if(NOT DEWPOINT_CORE_ONLY)
   dewpoint_require(benchmark libbenchmark-dev)
   list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB)
   dewpoint_require(OpenVDB libopenvdb-dev)
+  dewpoint_require(ZLIB zlib1g-dev)  # CRC-32 of simulation checkpoints
   find_program(DEWPOINT_OIIOTOOL oiiotool)
   if(NOT DEWPOINT_OIIOTOOL)
     message(FATAL_ERROR "dewpoint: missing oiiotool; install the Debian package 'openimageio-tools'")

@@ -12,7 +12,7 @@ packages=(
   cmake ninja-build g++ make pkg-config
   libeigen3-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
   libtbb-dev libassimp-dev libembree-dev libopenimageio-dev openimageio-tools jq
-  libopenexr-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev libboost-dev
+  libopenexr-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev libboost-dev zlib1g-dev
   clang libclang-rt-14-dev libomp-dev
   slurm-wlm munge python3 assimp-utils
   gnuplot-nox fonts-dejavu-core

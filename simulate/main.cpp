@@ -7,9 +7,11 @@
 #include <iostream>
 
 #include "air_vdb.h"
+#include "checkpoint_folder.h"
 #include "cli_common.h"
 #include "dewpoint/version.h"
 #include "frames.h"
+#include "ledger_csv.h"
 #include "scene.h"
 #include "simulation.h"
 #include "simulation_setup.h"
@@ -28,7 +30,35 @@ struct Options {
   std::string frames;
   std::string preset;
   bool quiet = false;
+  bool resume = false;
+  int checkpoint_every = 10;  // frames; 0: none
 };
+
+// The newest intact checkpoint of OUT, checked against the scene; none when
+// there is none (the run then starts at frame 0). Damaged ones are skipped
+// with a warning; a checkpoint of another scene is an error.
+std::optional<dp::io::Checkpoint> checkpoint_to_resume(const fs::path& dir, const dp::io::Scene& scene) {
+  dp::io::NewestCheckpoint found = dp::io::find_newest_checkpoint(dir);
+  for (const std::string& why : found.skipped) std::cerr << "dewpoint-simulate: warning: skipping checkpoint " << why << "\n";
+  if (!found.checkpoint) {
+    std::cerr << "dewpoint-simulate: --resume: no usable checkpoint in " << dir.string() << "; starting from the beginning\n";
+    return std::nullopt;
+  }
+  if (found.checkpoint->scene_hash != dp::io::scene_document_hash(scene.document))
+    throw std::invalid_argument(found.file.string() + ": --resume: " + scene.file.string() +
+                                " has changed since this checkpoint was written; run without --resume to start over");
+  return found.checkpoint;
+}
+
+// The frames an interrupted run listed up to `last_frame`; none when it
+// left no manifest.
+std::vector<dp::io::FrameEntry> frames_through(const fs::path& frames_dir, int last_frame) {
+  std::vector<dp::io::FrameEntry> kept;
+  if (!fs::exists(frames_dir / "manifest.json")) return kept;
+  for (const dp::io::FrameEntry& f : dp::io::read_manifest(frames_dir).frames)
+    if (f.index <= last_frame) kept.push_back(f);
+  return kept;
+}
 
 int run(const Options& opt) {
   // Everything that can be wrong with the input is found before any output
@@ -50,6 +80,13 @@ int run(const Options& opt) {
     throw dp::io::SceneError(scene.file.string() + ": simulation.liquid_blocks: no liquid particles and no textured rigid");
 
   std::unique_ptr<dp::Simulation> simulation = dp::make_simulation(exec, setup);
+  const fs::path checkpoints_dir = opt.out / "checkpoints";
+  std::optional<dp::io::Checkpoint> resumed = opt.resume ? checkpoint_to_resume(checkpoints_dir, scene) : std::nullopt;
+  if (resumed) {
+    simulation->restore(resumed->state);
+    std::cerr << "dewpoint-simulate: resuming after frame " << resumed->frame << " (step " << resumed->state.steps << ")\n";
+  }
+  const int first_frame = resumed ? resumed->frame + 1 : 0;
 
   const fs::path frames_dir = opt.out / "frames";
   fs::create_directories(frames_dir);
@@ -63,6 +100,10 @@ int run(const Options& opt) {
   manifest.rigid_particles_file = "rigid_particles.ply";
   manifest.extra["generator"] = std::string("dewpoint-simulate ") + dp::kVersion;
   manifest.extra["settings"] = {{"device", opt.device}, {"threads", exec.threads}, {"frames", opt.frames}};
+  if (resumed) {
+    manifest.extra["settings"]["resumed_after_frame"] = resumed->frame;
+    manifest.frames = frames_through(frames_dir, resumed->frame);
+  }
   manifest.extra["scene"] = scene.document;
   if (!scene.preset.empty()) manifest.extra["preset"] = scene.preset;
   dp::io::write_rigid_particles(frames_dir / manifest.rigid_particles_file, simulation->rigid_particles(),
@@ -76,19 +117,17 @@ int run(const Options& opt) {
   // Table-1 timings of every step (docs/file-formats.md, stats folder).
   const fs::path stats_dir = opt.out / "stats";
   fs::create_directories(stats_dir);
-  dp::io::StepTimingsCsv timings(stats_dir / "timings.csv");
+  dp::io::StepTimingsCsv timings = resumed ? dp::io::StepTimingsCsv(stats_dir / "timings.csv", resumed->state.steps)
+                                           : dp::io::StepTimingsCsv(stats_dir / "timings.csv");
   auto record_step = [&](const dp::StepReport& report) {
     timings.add(dp::io::table1_row(report, simulation->step_count(), simulation->time()));
   };
 
   const double frame_interval = 1.0 / sim.frame_rate_hz;
   dp::io::Progress progress("simulate " + scene.name, last_frame + 1, opt.quiet);
-  for (int frame = 0; frame <= last_frame; ++frame) {
-    // Frame times are independent of the step size: step until the frame's time.
-    const double frame_time = frame * frame_interval;
-    simulation->advance_to(frame_time, record_step);
-    timings.flush();
-    if (!range.contains(frame)) continue;
+  // One frame's files and its manifest entry; the manifest is rewritten
+  // last, so that it lists only complete frames.
+  auto write_frame = [&](int frame) {
     dp::ParticleSnapshot particles = simulation->particles();
     dp::io::FrameEntry entry;
     entry.index = frame;
@@ -121,10 +160,13 @@ int run(const Options& opt) {
                    {"relative_drift", w.relative_drift()}};
     manifest.frames.push_back(entry);
     dp::io::write_manifest(frames_dir, manifest);
+    dp::io::write_ledger_csv(stats_dir / "ledger.csv", manifest.frames);
+  };
+  auto progress_detail = [&]() {
     const dp::StepReport& last = simulation->last_step();
     char detail[160];
     std::snprintf(detail, sizeof detail, "t=%.4f s  step %lld  dt=%.2e s  PCISPH %d it, density error %.3f %%",
-                  entry.time_s, static_cast<long long>(entry.step), last.dt, last.pressure_iterations,
+                  simulation->time(), static_cast<long long>(simulation->step_count()), last.dt, last.pressure_iterations,
                   100.0 * last.density_error);
     std::string line = detail;
     if (setup.air) {
@@ -133,7 +175,20 @@ int run(const Options& opt) {
                     static_cast<double>(last.air.projection_residual));
       line += air;
     }
-    progress.update(frame + 1, line);
+    return line;
+  };
+
+  const std::uint64_t scene_hash = dp::io::scene_document_hash(scene.document);
+  for (int frame = first_frame; frame <= last_frame; ++frame) {
+    // Frame times are independent of the step size: step until the frame's time.
+    const double frame_time = frame * frame_interval;
+    simulation->advance_to(frame_time, record_step);
+    timings.flush();
+    if (range.contains(frame)) write_frame(frame);
+    // After the frame's files: a run resumed from here has them all.
+    if (opt.checkpoint_every > 0 && frame > 0 && frame % opt.checkpoint_every == 0 && frame < last_frame)
+      dp::io::save_checkpoint(checkpoints_dir, dp::io::Checkpoint{frame, scene_hash, simulation->state()});
+    progress.update(frame + 1, progress_detail());
   }
   progress.finish(std::to_string(manifest.frames.size()) + " frames in " + frames_dir.string());
   const dp::io::TimingSummary summary = timings.summary();
@@ -155,6 +210,11 @@ int main(int argc, char** argv) {
   app.add_option("--frames", opt.frames, "frames to write, A-B (inclusive)");
   app.add_option("--preset", opt.preset, "apply the scene's presets.NAME (a JSON merge patch, e.g. preview)");
   app.add_flag("--quiet", opt.quiet, "no progress output");
+  app.add_flag("--resume", opt.resume,
+               "continue an interrupted run from the newest intact checkpoint in OUT/checkpoints (from the start when there is none)");
+  app.add_option("--checkpoint-every", opt.checkpoint_every,
+                 "write a checkpoint every N frames to OUT/checkpoints, keeping the last two (0: none; default 10)")
+      ->check(CLI::NonNegativeNumber);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -28,6 +28,13 @@ InstabilityError::InstabilityError(std::int64_t step_, std::string quantity_, st
       particle_id(id),
       where(where_) {}
 
+InstabilityError::InstabilityError(std::int64_t step_, std::string quantity_, const std::string& location)
+    : std::runtime_error("simulation unstable at step " + std::to_string(step_) + ": " + quantity_ + " is not finite in " + location),
+      step(step_),
+      quantity(std::move(quantity_)),
+      particle_id(0),
+      where() {}
+
 void check_air_cell_size(const SimulationSetup& setup) {
   if (!setup.air) return;
   const AirSettings& a = *setup.air;

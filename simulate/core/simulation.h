@@ -15,6 +15,7 @@
 #include "coupling/coupling_settings.h"
 #include "coupling/water_ledger.h"
 #include "math/vec3.h"
+#include "simulation_state.h"
 #include "surface/surface_texture_setup.h"
 
 namespace dp {
@@ -106,6 +107,8 @@ class InstabilityError : public std::runtime_error {
  public:
   InstabilityError(std::int64_t step, std::string quantity, std::uint32_t particle_id, Vec3 where,
                    const std::string& detail);
+  // Of the air grid: `location` names the cell or face.
+  InstabilityError(std::int64_t step, std::string quantity, const std::string& location);
   std::int64_t step;
   std::string quantity;
   std::uint32_t particle_id;
@@ -133,6 +136,12 @@ class Simulation {
   virtual std::optional<AirSnapshot> air() const = 0;
   // Where the water is now, and the drift of its sum (coupling/water_ledger.h).
   virtual WaterLedger water_ledger() const = 0;
+  // Everything that carries over to later steps (simulation_state.h), and
+  // its restoration into a simulation made from the same setup; the run then
+  // continues exactly as the one the state came from. restore throws
+  // std::invalid_argument when the state does not fit this setup.
+  virtual SimulationState state() const = 0;
+  virtual void restore(const SimulationState& state) = 0;
 };
 
 // Throws std::invalid_argument naming the problem when the air grid's cells

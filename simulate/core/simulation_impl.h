@@ -154,6 +154,66 @@ class SimulationImpl final : public Simulation {
     if (!air_) return std::nullopt;
     return air_->snapshot();
   }
+  SimulationState state() const override {
+    SimulationState s;
+    s.steps = steps_;
+    s.time = time_;
+    s.last_max_acceleration = last_max_acceleration_;
+    s.emitted_particles = emitted_particles_;
+    split_units(coupling_.liquid_to_air_units(), s.liquid_to_air_lo, s.liquid_to_air_hi);
+    split_units(coupling_.texels_to_air_units(), s.texels_to_air_lo, s.texels_to_air_hi);
+    s.initial_water = initial_water_;
+    LiquidState& l = s.liquid;
+    l.position = Exec::download(liquid_.position);
+    l.velocity = Exec::download(liquid_.velocity);
+    l.temperature = Exec::download(liquid_.temperature);
+    l.mass_units = Exec::download(liquid_.units);
+    l.id = Exec::download(liquid_.id);
+    l.density = Exec::download(density_);
+    l.pressure = Exec::download(pressure_);
+    l.surface_area = Exec::download(surface_area_);
+    l.next_id = next_id_;
+    s.rigid_temperature = Exec::download(rigid_temperature_);
+    s.surfaces = surfaces_.states();
+    s.has_air = air_.has_value();
+    if (air_) s.air = air_->state();
+    return s;
+  }
+
+  void restore(const SimulationState& s) override {
+    const LiquidState& l = s.liquid;
+    const std::size_t n = l.position.size();
+    const bool liquid_fits = l.velocity.size() == n && l.temperature.size() == n && l.mass_units.size() == n && l.id.size() == n &&
+                             l.density.size() == n && l.pressure.size() == n && l.surface_area.size() == n;
+    if (!liquid_fits) throw std::invalid_argument("simulation state: liquid particle arrays differ in length");
+    if (s.rigid_temperature.size() != rigid_temperature_.size())
+      throw std::invalid_argument("simulation state: " + std::to_string(s.rigid_temperature.size()) + " rigid particles, the setup has " +
+                                  std::to_string(rigid_temperature_.size()));
+    if (s.has_air != air_.has_value()) throw std::invalid_argument("simulation state: the air phase is present in one of state and setup only");
+    surfaces_.restore(s.surfaces);
+    if (air_) air_->restore(s.air);
+    Exec::upload(liquid_.position, l.position);
+    Exec::upload(liquid_.velocity, l.velocity);
+    Exec::upload(liquid_.temperature, l.temperature);
+    Exec::upload(liquid_.units, l.mass_units);
+    Exec::upload(liquid_.id, l.id);
+    liquid_.extra.resize(0);
+    liquid_.extra_count = 0;
+    resize_scratch(n);
+    Exec::upload(density_, l.density);
+    Exec::upload(pressure_, l.pressure);
+    Exec::upload(surface_area_, l.surface_area);
+    next_id_ = l.next_id;
+    Exec::upload(rigid_temperature_, s.rigid_temperature);
+    steps_ = s.steps;
+    time_ = s.time;
+    last_max_acceleration_ = s.last_max_acceleration;
+    emitted_particles_ = s.emitted_particles;
+    coupling_.restore_units(join_units(s.liquid_to_air_lo, s.liquid_to_air_hi), join_units(s.texels_to_air_lo, s.texels_to_air_hi));
+    initial_water_ = s.initial_water;
+    report_ = StepReport{};
+  }
+
   WaterLedger water_ledger() const override {
     WaterLedger l;
     std::uint64_t units = 0;  // exact: 2^24 per particle, far from 2^64
@@ -177,6 +237,16 @@ class SimulationImpl final : public Simulation {
   }
 
  private:
+  using Units = typename AirCoupling<Exec>::Units;
+  static void split_units(Units u, std::uint64_t& lo, std::int64_t& hi) {
+    lo = static_cast<std::uint64_t>(u);
+    hi = static_cast<std::int64_t>(u >> 64);
+  }
+  static Units join_units(std::uint64_t lo, std::int64_t hi) {
+    __extension__ typedef unsigned __int128 Bits;  // shifting the signed type left is undefined for negative values
+    return static_cast<Units>((static_cast<Bits>(static_cast<std::uint64_t>(hi)) << 64) | lo);
+  }
+
   static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
   void resize_scratch(std::size_t n) {
@@ -350,6 +420,7 @@ class SimulationImpl final : public Simulation {
     step_air(dt, report);  // Alg. 1 Phase 2
     couple(dt, report);    // Alg. 1 Phase 3, lines 12-16
     emit_particles();      // line 17
+    check_air_stability();
     report_ = report;
     return report;
   }
@@ -525,6 +596,22 @@ class SimulationImpl final : public Simulation {
       detail << "particle left the simulation domain";
     }
     throw InstabilityError(steps_, quantity, id, x, detail.str());
+  }
+
+  void check_air_stability() const {
+    if (!air_) return;
+    const NonFiniteValue bad = air_->first_non_finite(exec_);
+    if (!bad.quantity) return;
+    const MacGrid& g = air_->grid();
+    std::ostringstream where;
+    if (bad.axis < 0) {
+      const int nx = g.nx, ny = g.ny;
+      const int i = static_cast<int>(bad.index % nx), j = static_cast<int>(bad.index / nx % ny), k = static_cast<int>(bad.index / nx / ny);
+      where << "air cell " << bad.index << " (i, j, k) = (" << i << ", " << j << ", " << k << ")";
+    } else {
+      where << "air face " << bad.index << " normal to " << "xyz"[bad.axis];
+    }
+    throw InstabilityError(steps_, bad.quantity, where.str());
   }
 
   Exec exec_;

@@ -103,6 +103,10 @@ AirInflowSettings read_air_inflow(JsonObject o, const AirSectionSettings& air) {
     in.max_m = o.vec3("max_m");
     for (int a = 0; a < 3; ++a)
       if (!(in.min_m[a] < in.max_m[a])) throw o.error("max_m", "every component must exceed min_m's");
+    // A box may reach past the domain (one covering a face), but must cover some of it.
+    for (int a = 0; a < 3; ++a)
+      if (in.max_m[a] <= air.domain_min_m[a] || in.min_m[a] >= air.domain_max_m[a])
+        throw o.error("min_m", "the box lies outside the air domain (simulation.air.domain or simulation.domain)");
   } else if (shape == "disc") {
     in.disc = true;
     in.center_m = o.vec3("center_m");
@@ -110,6 +114,8 @@ AirInflowSettings read_air_inflow(JsonObject o, const AirSectionSettings& air) {
     const double n = std::sqrt(in.normal[0] * in.normal[0] + in.normal[1] * in.normal[1] + in.normal[2] * in.normal[2]);
     if (!(n > 0)) throw o.error("normal", "expected a non-zero vector");
     for (double& c : in.normal) c /= n;
+    if (!inside(in.center_m, air.domain_min_m, air.domain_max_m))
+      throw o.error("center_m", "outside the air domain (simulation.air.domain or simulation.domain)");
     in.radius_m = positive(o, "radius_m", o.number("radius_m"));
     in.thickness_m = o.number("thickness_m", 0);
     if (in.thickness_m < 0) throw o.error("thickness_m", "expected a non-negative number");

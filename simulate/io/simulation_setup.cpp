@@ -1,6 +1,7 @@
 #include "simulation_setup.h"
 
 #include <cmath>
+#include <sstream>
 
 #include "rigid/sample_surface.h"
 #include "atlas_rasterization.h"
@@ -11,6 +12,21 @@ namespace dp::io {
 
 namespace {
 Vec3 to_vec3(const Vec3d& v) { return Vec3{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])}; }
+
+// A rigid reaching past the domain would put boundary particles where
+// liquid particles count as unstable (docs/scene-format.md).
+void check_inside_domain(const TriangleMesh& mesh, const SimulationSettings& s, const std::string& key) {
+  for (const auto& p : mesh.positions)
+    for (int a = 0; a < 3; ++a)
+      if (p[a] < s.domain_min_m[a] || p[a] > s.domain_max_m[a]) {
+        std::ostringstream m;
+        m << key << ".mesh: vertex (" << p[0] << ", " << p[1] << ", " << p[2] << ") m lies outside the simulation domain ["
+          << s.domain_min_m[0] << ", " << s.domain_max_m[0] << "] x [" << s.domain_min_m[1] << ", " << s.domain_max_m[1] << "] x ["
+          << s.domain_min_m[2] << ", " << s.domain_max_m[2] << "] m (simulation.domain)";
+        throw SceneError(m.str());
+      }
+}
+
 }  // namespace
 
 namespace {
@@ -166,7 +182,14 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   }
   for (std::size_t r = 0; r < s.rigids.size(); ++r) {
     const RigidObject& rigid = s.rigids[r];
-    TriangleMesh mesh = load_triangle_mesh(rigid.mesh);
+    const std::string key = scene.file.string() + ": simulation.rigids[" + std::to_string(r) + "]";
+    TriangleMesh mesh;
+    try {
+      mesh = load_triangle_mesh(rigid.mesh);
+    } catch (const std::runtime_error& e) {
+      throw SceneError(key + ".mesh: " + e.what());
+    }
+    check_inside_domain(mesh, s, key);
     std::vector<Vec3> samples = sample_surface(mesh.positions, mesh.triangles, setup.particle_spacing);
     if (rigid.texture) {
       AtlasMesh atlas;

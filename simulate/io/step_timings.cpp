@@ -27,13 +27,56 @@ StepTiming table1_row(const StepReport& r, std::int64_t step, double time_s) {
   return t;
 }
 
+namespace {
+
+constexpr const char* kTimingsHeader =
+    "step,time_s,dt_ms,ptcl_ms,grid_ms,neigh_ms,heat_ms,eva_ms,pcisph_iterations,density_error,air_cg_iterations\n";
+
+// One row of an earlier run's table; false when the line is not one.
+bool parse_timing_row(const std::string& line, StepTiming& t) {
+  long long step = 0;
+  double dt_ms = 0;
+  const int fields = std::sscanf(line.c_str(), "%lld,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%d,%lf,%d", &step, &t.time_s, &dt_ms, &t.ptcl_ms, &t.grid_ms,
+                                 &t.neigh_ms, &t.heat_ms, &t.eva_ms, &t.pressure_iterations, &t.density_error, &t.air_iterations);
+  t.step = step;
+  t.dt_s = 1e-3 * dt_ms;
+  return fields == 11;
+}
+
+}  // namespace
+
 StepTimingsCsv::StepTimingsCsv(const std::filesystem::path& file) : file_(file), out_(file, std::ios::trunc) {
   if (!out_) throw std::runtime_error(file.string() + ": cannot write the timing table");
-  out_ << "step,time_s,dt_ms,ptcl_ms,grid_ms,neigh_ms,heat_ms,eva_ms,pcisph_iterations,density_error,air_cg_iterations\n";
+  out_ << kTimingsHeader;
+}
+
+StepTimingsCsv::StepTimingsCsv(const std::filesystem::path& file, std::int64_t last_step) : file_(file) {
+  std::vector<std::string> kept;
+  {
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);  // header
+    StepTiming t;
+    while (std::getline(in, line))
+      if (parse_timing_row(line, t) && t.step <= last_step) {
+        rows_.push_back(t);
+        kept.push_back(line);
+      }
+  }
+  write_atomically(file, [&](std::ostream& out) {
+    out << kTimingsHeader;
+    for (const std::string& line : kept) out << line << "\n";
+  });
+  out_.open(file, std::ios::app);
+  if (!out_) throw std::runtime_error(file.string() + ": cannot write the timing table");
 }
 
 void StepTimingsCsv::add(const StepTiming& t) {
   rows_.push_back(t);
+  write_row(t);
+}
+
+void StepTimingsCsv::write_row(const StepTiming& t) {
   char line[256];
   std::snprintf(line, sizeof line, "%lld,%.9g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%d\n", static_cast<long long>(t.step), t.time_s,
                 1e3 * t.dt_s, t.ptcl_ms, t.grid_ms, t.neigh_ms, t.heat_ms, t.eva_ms, t.pressure_iterations, t.density_error,

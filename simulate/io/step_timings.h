@@ -40,12 +40,18 @@ class StepTimingsCsv {
  public:
   // Starts the file with its header, replacing an older one.
   explicit StepTimingsCsv(const std::filesystem::path& file);
+  // Continues an existing table after a restart from a checkpoint at
+  // `last_step`: its rows up to that step are kept (and summarised), later
+  // ones, which the resumed run computes again, are dropped. A missing or
+  // unreadable table starts afresh.
+  StepTimingsCsv(const std::filesystem::path& file, std::int64_t last_step);
   void add(const StepTiming& row);
   // Makes the rows so far durable (called at every frame).
   void flush();
   TimingSummary summary() const;
 
  private:
+  void write_row(const StepTiming& row);
   std::filesystem::path file_;
   std::ofstream out_;
   std::vector<StepTiming> rows_;

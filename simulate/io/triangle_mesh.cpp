@@ -5,7 +5,10 @@
 
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace dp::io {
 
@@ -20,7 +23,47 @@ double TriangleMesh::area() const {
   return total;
 }
 
+namespace {
+
+// Vertices welded by position: files split a vertex wherever its normal or
+// UV changes, which must not make a closed surface look cut open.
+std::vector<std::uint32_t> welded_vertices(const TriangleMesh& mesh) {
+  std::map<std::array<float, 3>, std::uint32_t> first;
+  std::vector<std::uint32_t> id(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+    id[v] = first.emplace(mesh.positions[v], static_cast<std::uint32_t>(first.size())).first->second;
+  return id;
+}
+
+}  // namespace
+
+std::string first_non_manifold_edge(const TriangleMesh& mesh) {
+  const std::vector<std::uint32_t> id = welded_vertices(mesh);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> faces_of_edge;
+  for (const auto& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e) {
+      std::uint32_t a = id[t[e]], b = id[t[(e + 1) % 3]];
+      if (a == b) continue;  // a collapsed edge bounds nothing
+      if (a > b) std::swap(a, b);
+      ++faces_of_edge[{a, b}];
+    }
+  for (const auto& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e) {
+      std::uint32_t a = id[t[e]], b = id[t[(e + 1) % 3]];
+      if (a > b) std::swap(a, b);
+      const auto it = faces_of_edge.find({a, b});
+      if (it == faces_of_edge.end() || it->second <= 2) continue;
+      const auto &p = mesh.positions[t[e]], &q = mesh.positions[t[(e + 1) % 3]];
+      return "the edge from (" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) + ") to (" +
+             std::to_string(q[0]) + ", " + std::to_string(q[1]) + ", " + std::to_string(q[2]) + ") is shared by " +
+             std::to_string(it->second) + " triangles";
+    }
+  return {};
+}
+
 TriangleMesh load_triangle_mesh(const std::filesystem::path& file) {
+  // assimp reports a folder as an unknown format; say what it is.
+  if (std::filesystem::is_directory(file)) throw std::runtime_error(file.string() + ": cannot load mesh: is a directory");
   Assimp::Importer importer;
   // Pre-transforming bakes the node hierarchy into world space, so the mesh
   // is where the scene file's author placed it.
@@ -49,6 +92,11 @@ TriangleMesh load_triangle_mesh(const std::filesystem::path& file) {
   }
   if (mesh.triangles.empty()) throw std::runtime_error(file.string() + ": mesh has no triangles");
   if (!(mesh.area() > 0)) throw std::runtime_error(file.string() + ": mesh has zero surface area");
+  // Boundary particles sample a surface with an inside and an outside; an
+  // edge between three or more triangles has neither (open edges, with one
+  // triangle, are fine: a tray or a sheet).
+  if (const std::string edge = first_non_manifold_edge(mesh); !edge.empty())
+    throw std::runtime_error(file.string() + ": mesh is not manifold: " + edge);
   return mesh;
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace dp::io {
@@ -17,8 +18,14 @@ struct TriangleMesh {
   double area() const;
 };
 
-// Throws std::runtime_error naming the file when it cannot be read, has no
-// triangles or has zero area.
+// Throws std::runtime_error naming the file when it cannot be read (a
+// directory, an unknown or damaged format), has no triangles, has zero area
+// or is not manifold (an edge shared by more than two triangles, vertices
+// compared by position).
 TriangleMesh load_triangle_mesh(const std::filesystem::path& file);
+
+// A description of the first edge shared by more than two triangles; empty
+// when there is none.
+std::string first_non_manifold_edge(const TriangleMesh& mesh);
 
 }  // namespace dp::io

@@ -19,11 +19,13 @@
 // symmetry within a few dozen steps).
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "air/air_settings.h"
 #include "air/air_state.h"
+#include "simulation_state.h"
 #include "air/boundary_conditions.h"
 #include "air/buoyancy_fedkiw2001.h"
 #include "air/classify_cells.h"
@@ -55,6 +57,19 @@ template <class T>
 struct ValueAsDouble {
   const T* v;
   DP_HD double operator()(std::size_t i) const { return static_cast<double>(v[i]); }
+};
+
+template <class T>
+struct IsNotFinite {
+  const T* v;
+  DP_HD bool operator()(std::size_t i) const { return !isfinite(v[i]); }
+};
+
+// Where a field of the grid first holds NaN or infinity.
+struct NonFiniteValue {
+  const char* quantity = nullptr;  // null: every value is finite
+  int axis = -1;                   // the face axis for velocities, -1 for cell fields
+  std::size_t index = 0;           // cell or face index
 };
 
 // Vapor (kg) and temperature change (K) per cell from the coupling, added
@@ -301,6 +316,48 @@ class AirGrid {
     s.w = Exec::download(u_[2]);
     s.ledger = ledger_;
     return s;
+  }
+
+  NonFiniteValue first_non_finite(const Exec& exec) const {
+    const std::size_t n = grid_.cell_count();
+    std::size_t at = exec.find_first(n, IsNotFinite<double>{Exec::ptr(vapor_)});
+    if (at < n) return NonFiniteValue{"air vapor density", -1, at};
+    at = exec.find_first(n, IsNotFinite<float>{Exec::ptr(temperature_excess_)});
+    if (at < n) return NonFiniteValue{"air temperature", -1, at};
+    for (int a = 0; a < 3; ++a) {
+      at = exec.find_first(u_[a].size(), IsNotFinite<float>{Exec::ptr(u_[a])});
+      if (at < u_[a].size()) return NonFiniteValue{"air velocity", a, at};
+    }
+    return NonFiniteValue{};
+  }
+
+  // What carries over to the next step, bit for bit (simulation_state.h).
+  AirGridState state() const {
+    AirGridState s;
+    s.u = Exec::download(u_[0]);
+    s.v = Exec::download(u_[1]);
+    s.w = Exec::download(u_[2]);
+    s.temperature_excess = Exec::download(temperature_excess_);
+    s.vapor = Exec::download(vapor_);
+    s.pressure = Exec::download(phi_);
+    s.kind = Exec::download(kind_);
+    s.ledger = ledger_;
+    return s;
+  }
+  // Throws std::invalid_argument when the sizes are not this grid's.
+  void restore(const AirGridState& s) {
+    const std::size_t n = grid_.cell_count();
+    const bool fits = s.u.size() == u_[0].size() && s.v.size() == u_[1].size() && s.w.size() == u_[2].size() &&
+                      s.temperature_excess.size() == n && s.vapor.size() == n && s.pressure.size() == n && s.kind.size() == n;
+    if (!fits) throw std::invalid_argument("air state: field sizes differ from the grid's");
+    Exec::upload(u_[0], s.u);
+    Exec::upload(u_[1], s.v);
+    Exec::upload(u_[2], s.w);
+    Exec::upload(temperature_excess_, s.temperature_excess);
+    Exec::upload(vapor_, s.vapor);
+    Exec::upload(phi_, s.pressure);
+    Exec::upload(kind_, s.kind);
+    ledger_ = s.ledger;
   }
 
   // For tests and restarts: replace the fields (sizes as in snapshot()).

@@ -105,6 +105,11 @@ class AirCoupling {
 
   Units liquid_to_air_units() const { return liquid_to_air_; }
   Units texels_to_air_units() const { return texels_to_air_; }
+  // For restarts: the exact totals so far.
+  void restore_units(Units liquid_to_air, Units texels_to_air) {
+    liquid_to_air_ = liquid_to_air;
+    texels_to_air_ = texels_to_air;
+  }
 
  private:
   void find_cell_velocity(const Exec& exec, const AirGrid<Exec>& air) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "simulation.h"
+#include "simulation_state.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/neighbor_list.h"
 #include "sph/uniform_grid.h"
@@ -86,6 +87,28 @@ class SurfaceTextures {
   Texture& texture(std::size_t i) { return textures_[i]; }
   const Texture& texture(std::size_t i) const { return textures_[i]; }
   double kg_per_unit() const { return kg_per_unit_; }
+
+  // The textures' dynamic part, per rigid (simulation_state.h).
+  std::vector<SurfaceState> states() const {
+    std::vector<SurfaceState> out;
+    for (const Texture& tex : textures_)
+      out.push_back(SurfaceState{Exec::download(tex.mass), Exec::download(tex.temperature), Exec::download(tex.wetting)});
+    return out;
+  }
+  // Throws std::invalid_argument when the count or sizes are not these textures'.
+  void restore(const std::vector<SurfaceState>& states) {
+    if (states.size() != textures_.size()) throw std::invalid_argument("surface state: number of textured rigids differs");
+    for (std::size_t i = 0; i < textures_.size(); ++i) {
+      const SurfaceState& s = states[i];
+      Texture& tex = textures_[i];
+      const std::size_t n = tex.size();
+      if (s.mass_units.size() != n || s.temperature.size() != n || s.wetting.size() != n)
+        throw std::invalid_argument("surface state: texel count of rigid " + std::to_string(i) + " differs");
+      Exec::upload(tex.mass, s.mass_units);
+      Exec::upload(tex.temperature, s.temperature);
+      Exec::upload(tex.wetting, s.wetting);
+    }
+  }
 
   std::vector<SurfaceSnapshot> snapshots() const {
     std::vector<SurfaceSnapshot> out;
