@@ -43,6 +43,10 @@ void write_surface_frame(const std::filesystem::path& file, const SurfaceSnapsho
   OIIO::ImageSpec spec(s.width, s.height, channels, OIIO::TypeDesc::FLOAT);
   spec.channelnames = surface_channel_names();
   spec.attribute("compression", "zip");
+  // OpenImageIO stamps the time of writing unless told one; a frame's bytes
+  // must depend on the simulation alone (a resumed run and image diffs
+  // compare them), so the stamp is a fixed, documented value.
+  spec.attribute("DateTime", "1970:01:01 00:00:00");
   // OpenImageIO picks the format from the name, and the temporary name's
   // extension is not .exr: the format is named.
   const std::filesystem::path temporary = temporary_path_for(file);
