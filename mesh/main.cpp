@@ -10,6 +10,7 @@
 
 #include "cli_common.h"
 #include "dewpoint/version.h"
+#include "log_options.h"
 #include "mesh_frames.h"
 
 namespace {
@@ -73,7 +74,8 @@ int main(int argc, char** argv) {
                "check every mesh with CGAL (closed, manifold, oriented, self-intersections, volume, area); exit code 1 "
                "if one fails");
   app.add_option("--threads", opt.threads, "CPU threads (0: all)")->check(CLI::Range(0, 4096));
-  app.add_flag("--quiet", opt.quiet, "no progress output");
+  dp::io::LogOptions log;  // progress is info; these tools have no debug lines
+  dp::io::add_log_options(app, log);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -85,6 +87,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    opt.quiet = !dp::io::logs(log.effective(), dp::io::LogLevel::Info);
     return run(opt);
   } catch (const std::exception& e) {
     std::cerr << "dewpoint-mesh: " << e.what() << "\n";

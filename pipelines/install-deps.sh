@@ -3,6 +3,8 @@
 # (clang and its runtime only for the libFuzzer targets, `make fuzz`; Slurm,
 # munge and python3 for the render farm, pipelines/farm; jq and assimp-utils
 # for its test, which checks the farm's files with tools that are not ours;
+# libopenvdb-tools (vdb_print), openimageio-tools and assimp-utils for the
+# readers test, tests/cli/readers_cli_test.cpp;
 # gnuplot, the DejaVu fonts and python3 for `make figures` and
 # pipelines/make-assets.py).
 # Idempotent: when everything is present it prints nothing and returns at once.
@@ -14,7 +16,7 @@ packages=(
   libtbb-dev libassimp-dev libembree-dev libopenimageio-dev openimageio-tools jq
   libopenexr-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev libboost-dev zlib1g-dev
   clang libclang-rt-14-dev libomp-dev
-  slurm-wlm munge python3 assimp-utils
+  slurm-wlm munge python3 assimp-utils libopenvdb-tools
   gnuplot-nox fonts-dejavu-core
 )
 

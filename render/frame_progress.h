@@ -13,7 +13,7 @@ namespace dp::render {
 
 class FrameProgress {
  public:
-  FrameProgress(const std::string& what, std::size_t frames, bool quiet) : progress_(what, static_cast<long>(frames) * kUnits, quiet) {}
+  FrameProgress(const std::string& what, std::size_t frames, bool quiet) : progress_(what, static_cast<long>(frames) * kUnits, quiet, kUnits) {}
 
   void tile_done(std::size_t frames_before, int frame, double fraction) {
     const std::lock_guard<std::mutex> lock(mutex_);

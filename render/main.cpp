@@ -18,6 +18,7 @@
 #include "frames.h"
 #include "image_output.h"
 #include "liquid_mesh.h"
+#include "log_options.h"
 #include "perspective_camera.h"
 #include "render_image.h"
 #include "render_scene.h"
@@ -198,7 +199,8 @@ int main(int argc, char** argv) {
   app.add_option("--aov", opt.aovs, "auxiliary EXR channels: comma-separated albedo,normal,depth, or none (default: the scene's render.aovs)");
   app.add_option("--preset", opt.preset, "scene preset (default: the one the frames were simulated with)");
   app.add_flag("--no-wet-paths", opt.no_wet_paths, "ignore the surface textures' wetting history");
-  app.add_flag("--quiet", opt.quiet, "no progress output");
+  dp::io::LogOptions log;  // progress is info; these tools have no debug lines
+  dp::io::add_log_options(app, log);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -207,6 +209,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    opt.quiet = !dp::io::logs(log.effective(), dp::io::LogLevel::Info);
     return run(opt);
   } catch (const std::exception& e) {
     std::cerr << "dewpoint-render: " << e.what() << "\n";

@@ -1,6 +1,7 @@
 // dewpoint-simulate: runs a scene's simulation and writes its frames.
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "dewpoint/version.h"
 #include "frames.h"
 #include "ledger_csv.h"
+#include "log_options.h"
 #include "scene.h"
 #include "simulation.h"
 #include "simulation_setup.h"
@@ -29,7 +31,8 @@ struct Options {
   int threads = 0;
   std::string frames;
   std::string preset;
-  bool quiet = false;
+  dp::io::LogOptions log;
+  dp::io::LogLevel level = dp::io::LogLevel::Info;  // log.effective(), once parsed
   bool resume = false;
   int checkpoint_every = 10;  // frames; 0: none
 };
@@ -37,11 +40,15 @@ struct Options {
 // The newest intact checkpoint of OUT, checked against the scene; none when
 // there is none (the run then starts at frame 0). Damaged ones are skipped
 // with a warning; a checkpoint of another scene is an error.
-std::optional<dp::io::Checkpoint> checkpoint_to_resume(const fs::path& dir, const dp::io::Scene& scene) {
+std::optional<dp::io::Checkpoint> checkpoint_to_resume(const fs::path& dir, const dp::io::Scene& scene, dp::io::LogLevel level) {
+  const bool warn = dp::io::logs(level, dp::io::LogLevel::Warn);
   dp::io::NewestCheckpoint found = dp::io::find_newest_checkpoint(dir);
-  for (const std::string& why : found.skipped) std::cerr << "dewpoint-simulate: warning: skipping checkpoint " << why << "\n";
+  for (const std::string& why : found.skipped)
+    if (warn) std::cerr << "dewpoint-simulate: warning: skipping checkpoint " << why << "\n";
   if (!found.checkpoint) {
-    std::cerr << "dewpoint-simulate: --resume: no usable checkpoint in " << dir.string() << "; starting from the beginning\n";
+    if (warn)
+      std::cerr << "dewpoint-simulate: warning: --resume: no usable checkpoint in " << dir.string()
+                << "; starting from the beginning\n";
     return std::nullopt;
   }
   if (found.checkpoint->scene_hash != dp::io::scene_document_hash(scene.document))
@@ -81,10 +88,10 @@ int run(const Options& opt) {
 
   std::unique_ptr<dp::Simulation> simulation = dp::make_simulation(exec, setup);
   const fs::path checkpoints_dir = opt.out / "checkpoints";
-  std::optional<dp::io::Checkpoint> resumed = opt.resume ? checkpoint_to_resume(checkpoints_dir, scene) : std::nullopt;
+  std::optional<dp::io::Checkpoint> resumed = opt.resume ? checkpoint_to_resume(checkpoints_dir, scene, opt.level) : std::nullopt;
   if (resumed) {
     simulation->restore(resumed->state);
-    std::cerr << "dewpoint-simulate: resuming after frame " << resumed->frame << " (step " << resumed->state.steps << ")\n";
+    if (dp::io::logs(opt.level, dp::io::LogLevel::Info)) std::cerr << "dewpoint-simulate: resuming after frame " << resumed->frame << " (step " << resumed->state.steps << ")\n";
   }
   const int first_frame = resumed ? resumed->frame + 1 : 0;
 
@@ -119,12 +126,11 @@ int run(const Options& opt) {
   fs::create_directories(stats_dir);
   dp::io::StepTimingsCsv timings = resumed ? dp::io::StepTimingsCsv(stats_dir / "timings.csv", resumed->state.steps)
                                            : dp::io::StepTimingsCsv(stats_dir / "timings.csv");
-  auto record_step = [&](const dp::StepReport& report) {
-    timings.add(dp::io::table1_row(report, simulation->step_count(), simulation->time()));
-  };
-
   const double frame_interval = 1.0 / sim.frame_rate_hz;
-  dp::io::Progress progress("simulate " + scene.name, last_frame + 1, opt.quiet);
+  dp::io::Progress progress("simulate " + scene.name, last_frame + 1, !dp::io::logs(opt.level, dp::io::LogLevel::Info));
+  const auto run_start = std::chrono::steady_clock::now();
+  const std::int64_t first_step = simulation->step_count();
+  int frames_done = first_frame;  // frames whose time the simulation has reached
   // One frame's files and its manifest entry; the manifest is rewritten
   // last, so that it lists only complete frames.
   auto write_frame = [&](int frame) {
@@ -164,10 +170,12 @@ int run(const Options& opt) {
   };
   auto progress_detail = [&]() {
     const dp::StepReport& last = simulation->last_step();
-    char detail[160];
-    std::snprintf(detail, sizeof detail, "t=%.4f s  step %lld  dt=%.2e s  PCISPH %d it, density error %.3f %%",
-                  simulation->time(), static_cast<long long>(simulation->step_count()), last.dt, last.pressure_iterations,
-                  100.0 * last.density_error);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
+    const double steps_per_s = seconds > 0 ? static_cast<double>(simulation->step_count() - first_step) / seconds : 0.0;
+    char detail[200];
+    std::snprintf(detail, sizeof detail, "t=%.4f s  step %lld (%.1f steps/s)  dt=%.2e s  PCISPH %d it, density error %.3f %%",
+                  simulation->time(), static_cast<long long>(simulation->step_count()), steps_per_s, last.dt,
+                  last.pressure_iterations, 100.0 * last.density_error);
     std::string line = detail;
     if (setup.air) {
       char air[96];
@@ -176,6 +184,13 @@ int run(const Options& opt) {
       line += air;
     }
     return line;
+  };
+  // Every step: its timings row; the terminal's progress line when due; at debug, a line of its own.
+  auto record_step = [&](const dp::StepReport& report) {
+    timings.add(dp::io::table1_row(report, simulation->step_count(), simulation->time()));
+    if (dp::io::logs(opt.level, dp::io::LogLevel::Debug))
+      std::cerr << "dewpoint-simulate: step " << simulation->step_count() << ": " << progress_detail() << "\n";
+    if (progress.due(frames_done)) progress.update(frames_done, progress_detail());
   };
 
   const std::uint64_t scene_hash = dp::io::scene_document_hash(scene.document);
@@ -188,12 +203,13 @@ int run(const Options& opt) {
     // After the frame's files: a run resumed from here has them all.
     if (opt.checkpoint_every > 0 && frame > 0 && frame % opt.checkpoint_every == 0 && frame < last_frame)
       dp::io::save_checkpoint(checkpoints_dir, dp::io::Checkpoint{frame, scene_hash, simulation->state()});
-    progress.update(frame + 1, progress_detail());
+    frames_done = frame + 1;
+    progress.update(frames_done, progress_detail());
   }
   progress.finish(std::to_string(manifest.frames.size()) + " frames in " + frames_dir.string());
   const dp::io::TimingSummary summary = timings.summary();
   dp::io::write_timing_summary(stats_dir / "timings_summary.json", summary);
-  if (!opt.quiet) std::cout << dp::io::format_timing_summary(summary);
+  if (dp::io::logs(opt.level, dp::io::LogLevel::Info)) std::cout << dp::io::format_timing_summary(summary);
   return 0;
 }
 
@@ -209,7 +225,7 @@ int main(int argc, char** argv) {
   app.add_option("--threads", opt.threads, "CPU threads (0: all)")->check(CLI::NonNegativeNumber);
   app.add_option("--frames", opt.frames, "frames to write, A-B (inclusive)");
   app.add_option("--preset", opt.preset, "apply the scene's presets.NAME (a JSON merge patch, e.g. preview)");
-  app.add_flag("--quiet", opt.quiet, "no progress output");
+  dp::io::add_log_options(app, opt.log);
   app.add_flag("--resume", opt.resume,
                "continue an interrupted run from the newest intact checkpoint in OUT/checkpoints (from the start when there is none)");
   app.add_option("--checkpoint-every", opt.checkpoint_every,
@@ -222,6 +238,7 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   try {
+    opt.level = opt.log.effective();
     return run(opt);
   } catch (const dp::InstabilityError& e) {
     std::cerr << "dewpoint-simulate: " << e.what() << " (frames written so far are intact)\n";

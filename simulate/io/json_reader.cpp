@@ -1,5 +1,7 @@
 #include "json_reader.h"
 
+#include "unit_suffix.h"
+
 namespace dp::io {
 
 namespace {
@@ -120,6 +122,9 @@ std::vector<std::pair<std::string, JsonObject>> JsonObject::entries(const std::s
 void JsonObject::finish() const {
   for (auto it = value_.begin(); it != value_.end(); ++it) {
     if (used_.count(it.key())) continue;
+    if (const auto expected = key_in_expected_unit(it.key(), used_))
+      throw SceneError(file_.string() + ": " + path_of(it.key()) + ": wrong unit: expected " + path_of(*expected) +
+                       " (the unit is the key's suffix), found " + it.key() + " = " + it.value().dump());
     std::string known;
     for (const auto& k : used_) known += (known.empty() ? "" : ", ") + k;
     throw SceneError(file_.string() + ": " + path_of(it.key()) + ": unknown key (known keys here: " + known + ")");

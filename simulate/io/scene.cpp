@@ -18,8 +18,19 @@ double positive(JsonObject& o, const std::string& key, double value) {
 }
 
 double kelvin_from_celsius(JsonObject& o, const std::string& key, double celsius) {
-  if (celsius < -kZeroCelsiusInKelvin) throw o.error(key, "temperature below absolute zero (" + std::to_string(celsius) + " °C)");
+  if (!(celsius >= -kZeroCelsiusInKelvin))
+    throw o.error(key, "temperature below absolute zero: expected at least -273.15 °C, found " + std::to_string(celsius) + " °C");
   return celsius_to_kelvin(celsius);
+}
+
+std::string format_vec3(const Vec3d& v) {
+  return "(" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) + ")";
+}
+
+// "a point inside [lo, hi] (what), found p": the expected-versus-found half of an out-of-domain error.
+std::string outside_message(const Vec3d& p, const Vec3d& lo, const Vec3d& hi, const std::string& domain) {
+  return "outside the " + domain + ": expected a point in " + format_vec3(lo) + " .. " + format_vec3(hi) + " m, found " +
+         format_vec3(p) + " m";
 }
 
 bool inside(const Vec3d& p, const Vec3d& lo, const Vec3d& hi) {
@@ -106,7 +117,9 @@ AirInflowSettings read_air_inflow(JsonObject o, const AirSectionSettings& air) {
     // A box may reach past the domain (one covering a face), but must cover some of it.
     for (int a = 0; a < 3; ++a)
       if (in.max_m[a] <= air.domain_min_m[a] || in.min_m[a] >= air.domain_max_m[a])
-        throw o.error("min_m", "the box lies outside the air domain (simulation.air.domain or simulation.domain)");
+        throw o.error("min_m", "the box " + format_vec3(in.min_m) + " .. " + format_vec3(in.max_m) +
+                                   " m lies outside the air domain " + format_vec3(air.domain_min_m) + " .. " +
+                                   format_vec3(air.domain_max_m) + " m (simulation.air.domain or simulation.domain)");
   } else if (shape == "disc") {
     in.disc = true;
     in.center_m = o.vec3("center_m");
@@ -115,7 +128,8 @@ AirInflowSettings read_air_inflow(JsonObject o, const AirSectionSettings& air) {
     if (!(n > 0)) throw o.error("normal", "expected a non-zero vector");
     for (double& c : in.normal) c /= n;
     if (!inside(in.center_m, air.domain_min_m, air.domain_max_m))
-      throw o.error("center_m", "outside the air domain (simulation.air.domain or simulation.domain)");
+      throw o.error("center_m", outside_message(in.center_m, air.domain_min_m, air.domain_max_m,
+                                                "air domain (simulation.air.domain or simulation.domain)"));
     in.radius_m = positive(o, "radius_m", o.number("radius_m"));
     in.thickness_m = o.number("thickness_m", 0);
     if (in.thickness_m < 0) throw o.error("thickness_m", "expected a non-negative number");
@@ -270,8 +284,14 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
     block.velocity_m_s = b.vec3("velocity_m_s", block.velocity_m_s);
     for (int a = 0; a < 3; ++a)
       if (!(block.min_m[a] < block.max_m[a])) throw b.error("max_m", "every component must exceed min_m's");
-    if (!inside(block.min_m, s.domain_min_m, s.domain_max_m)) throw b.error("min_m", "outside the simulation domain");
-    if (!inside(block.max_m, s.domain_min_m, s.domain_max_m)) throw b.error("max_m", "outside the simulation domain");
+    // Spheres and cylinders are checked by their bounding box, reported under their own keys.
+    const bool box = block.shape == LiquidShape::Box;
+    if (!inside(block.min_m, s.domain_min_m, s.domain_max_m))
+      throw b.error(box ? "min_m" : "center_m", (box ? "" : "the shape's lowest corner is ") +
+                                                     outside_message(block.min_m, s.domain_min_m, s.domain_max_m, "simulation domain"));
+    if (!inside(block.max_m, s.domain_min_m, s.domain_max_m))
+      throw b.error(box ? "max_m" : "radius_m", (box ? "" : "the shape's highest corner is ") +
+                                                     outside_message(block.max_m, s.domain_min_m, s.domain_max_m, "simulation domain"));
     b.finish();
     s.liquid_blocks.push_back(block);
   }

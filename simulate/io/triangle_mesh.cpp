@@ -90,8 +90,10 @@ TriangleMesh load_triangle_mesh(const std::filesystem::path& file) {
       mesh.triangles.push_back({base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
     }
   }
-  if (mesh.triangles.empty()) throw std::runtime_error(file.string() + ": mesh has no triangles");
-  if (!(mesh.area() > 0)) throw std::runtime_error(file.string() + ": mesh has zero surface area");
+  if (mesh.triangles.empty()) throw std::runtime_error(file.string() + ": expected a mesh with triangles, found none");
+  if (!(mesh.area() > 0))
+    throw std::runtime_error(file.string() + ": expected a mesh with a positive surface area, found " + std::to_string(mesh.area()) +
+                             " m^2 (all " + std::to_string(mesh.triangles.size()) + " triangles are degenerate)");
   // Boundary particles sample a surface with an inside and an outside; an
   // edge between three or more triangles has neither (open edges, with one
   // triangle, are fine: a tray or a sheet).
