@@ -34,7 +34,7 @@ class Progress {
   bool terminal_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_print_{};
-  long last_item_printed_ = -1;
+  long last_item_printed_ = 0;  // a pipe's first line is the first item done
   bool line_open_ = false;  // a terminal line not yet ended by a newline
 };
 

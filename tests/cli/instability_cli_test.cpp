@@ -108,6 +108,25 @@ TEST_F(InstabilityCli, SpeedBoundExceededExitsThreeAndLeavesReadableFramesAndChe
   EXPECT_EQ(io::read_manifest(frames()).frames.size(), m.frames.size());
 }
 
+TEST_F(InstabilityCli, NonFiniteAirExitsThreeNamingTheAirCellOrFace) {
+  // A hot tray held at 500 °C under an absurd buoyancy coefficient: the air's
+  // velocity overflows to infinity, then NaN, within a few steps.
+  doc_["simulation"]["air"]["buoyancy_beta"] = 1e38;
+  doc_["simulation"]["rigids"][0]["temperature_c"] = 500;
+  doc_["simulation"]["rigids"][0]["hold_temperature"] = true;
+  doc_["simulation"]["duration_s"] = 0.1;
+  const test::CommandResult r = simulate();
+  ASSERT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_TRUE(std::regex_search(r.output, std::regex("unstable at step [0-9]+: air [a-z ]+ is not finite in air (cell|face) [0-9]+")))
+      << r.output;
+  const io::FramesManifest m = io::read_manifest(frames());
+  ASSERT_GE(m.frames.size(), 1u);
+  for (const io::FrameEntry& f : m.frames) {
+    expect_particles_readable(frames() / f.particles_file, f.liquid_particles);
+    expect_air_readable(frames() / f.air_file);
+  }
+}
+
 TEST_F(InstabilityCli, AbsurdGravityExitsThreeNamingStepAndQuantity) {
   doc_["simulation"]["gravity_m_s2"] = {0, -1e9, 0};
   const test::CommandResult r = simulate();
