@@ -73,8 +73,9 @@ TEST_F(LogLevelCli, InfoThroughAPipeGivesOneProgressLinePerFrame) {
 }
 
 TEST_F(LogLevelCli, ErrorAndQuietSayNothingOnSuccess) {
-  for (const char* flags : {"--log-level error", "--quiet"}) {
-    const test::CommandResult r = simulate(flags);
+  // Two frames are enough: at info they would give progress lines and the timing summary.
+  for (const std::string flags : {"--log-level error", "--quiet"}) {
+    const test::CommandResult r = simulate(flags + " --frames 0-1");
     EXPECT_EQ(r.exit_code, 0) << flags << ": " << r.output;
     EXPECT_EQ(r.output, "") << flags;
   }
@@ -82,11 +83,11 @@ TEST_F(LogLevelCli, ErrorAndQuietSayNothingOnSuccess) {
 
 TEST_F(LogLevelCli, WarnShowsWarningsButNoProgress) {
   // --resume into an empty OUT: a warning, then a run from the start.
-  const test::CommandResult r = simulate("--log-level warn --resume");
+  const test::CommandResult r = simulate("--log-level warn --resume --frames 0-1");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("warning: --resume: no usable checkpoint"), std::string::npos) << r.output;
   EXPECT_EQ(lines_starting(r.output, "simulate demo "), 0) << r.output;
-  const test::CommandResult quiet = simulate("--quiet --resume");
+  const test::CommandResult quiet = simulate("--quiet --resume --frames 0-1");
   EXPECT_EQ(quiet.output.find("warning"), std::string::npos) << quiet.output;
 }
 
