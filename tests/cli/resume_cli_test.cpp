@@ -71,7 +71,8 @@ class ResumeCli : public ::testing::Test {
   }
 
   std::vector<std::string> arguments(const fs::path& out, const std::vector<std::string>& extra) const {
-    std::vector<std::string> a{DEWPOINT_SIMULATE, scene_.string(), "-o", out.string(), "--threads", "2", "--quiet",
+    // info: the test reads the "resuming after frame" and "starting from the beginning" lines.
+    std::vector<std::string> a{DEWPOINT_SIMULATE, scene_.string(), "-o", out.string(), "--threads", "2", "--log-level", "info",
                                "--checkpoint-every", "1"};
     a.insert(a.end(), extra.begin(), extra.end());
     return a;
