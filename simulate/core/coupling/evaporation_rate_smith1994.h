@@ -30,21 +30,34 @@ struct AirAtSurfel {
   double speed;
 };
 
+// Eq. 12 in kg/s from the two pressures (Pa); positive: the surfel loses
+// mass (evaporation). Kernels that need both signs compute p_sat and p_c
+// once and call this.
+DP_HD inline double smith_mass_rate_at(double area, double a, double b, double speed, double p_sat, double p_c) {
+  return area * (a + b * speed) * (p_sat - p_c);
+}
+
 // Eq. 12 in kg/s; positive: the surfel loses mass (evaporation).
 DP_HD inline double smith_mass_rate(double area, double a, double b, double speed, double surface_kelvin, const AirAtSurfel& air) {
   const double p_sat = saturation_pressure_at_kelvin(surface_kelvin);          // Eq. 11
   const double p_c = vapor_pressure(air.vapor_density, air.temperature);        // Eq. 10
-  return area * (a + b * speed) * (p_sat - p_c);
+  return smith_mass_rate_at(area, a, b, speed, p_sat, p_c);
 }
 
 // Eq. 16: evaRate(c, s) = max(dm_s/dtau, 0), kg/s.
 DP_HD inline double evaporation_rate(double area, const EvaporationCoefficients& k, double surface_kelvin, const AirAtSurfel& air) {
   return fmax(smith_mass_rate(area, k.a, k.b, air.speed, surface_kelvin, air), 0.0);
 }
+DP_HD inline double evaporation_rate_at(double area, const EvaporationCoefficients& k, double speed, double p_sat, double p_c) {
+  return fmax(smith_mass_rate_at(area, k.a, k.b, speed, p_sat, p_c), 0.0);
+}
 
 // Eq. 17: condRate(c, s) = -min(dm_s/dtau, 0) with b = 0, kg/s.
 DP_HD inline double condensation_rate(double area, const EvaporationCoefficients& k, double surface_kelvin, const AirAtSurfel& air) {
   return -fmin(smith_mass_rate(area, k.a, 0.0, air.speed, surface_kelvin, air), 0.0);
+}
+DP_HD inline double condensation_rate_at(double area, const EvaporationCoefficients& k, double p_sat, double p_c) {
+  return -fmin(smith_mass_rate_at(area, k.a, 0.0, 0.0, p_sat, p_c), 0.0);
 }
 
 }  // namespace dp
