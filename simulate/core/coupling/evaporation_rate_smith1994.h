@@ -13,13 +13,26 @@
 namespace dp {
 
 // a in kg/(m^2 s Pa), b in kg/(m^3 Pa) (per m/s of air speed). The paper
-// gives no values. Defaults: Smith et al. 1994's pool law as quoted by
-// Woolley et al. 2011 (Energy & Buildings), q = (30.6 + 32.1 v)(p_w - p_a)
-// W/m^2 with pressures in kPa, turned into mass by the latent heat of
-// vaporisation near 20 degC, L = 2.45 MJ/kg: a = 30.6e-3 / L, b = 32.1e-3 / L.
+// gives no values. Defaults: Smith, Löf & Jones 1994's law for an
+// unoccupied outdoor pool in its metric form,
+//   q = (30.6 + 32.1 v)(p_w - p_a)  kJ/(h m^2), p in mmHg, v in m/s,
+// i.e. 72 % of the ASHRAE (Carrier) still-air coefficient, 95 Btu/(h ft^2
+// inHg) = 42.5 kJ/(h m^2 mmHg), which is what their measurements gave at
+// near-zero wind. In SI: 30.6 kJ/(h m^2 mmHg) = 30.6e3 / 3600 / 133.322
+// W/(m^2 Pa) = 63.8 W/(m^2 kPa) (not 30.6: the coefficients are not per
+// kPa), turned into mass by the latent heat near 20 degC, L = 2.45 MJ/kg.
+// Sources: docs/paper-map.md (departures).
+inline constexpr double kSmithHeatCoefficientA = 30.6;   // kJ/(h m^2 mmHg)
+inline constexpr double kSmithHeatCoefficientB = 32.1;   // kJ/(h m^2 mmHg) per m/s
+inline constexpr double kPascalPerMmHg = 133.322387415;
+inline constexpr double kSmithLatentHeat = 2.45e6;       // J/kg
+DP_HD constexpr double smith_coefficient_si(double kj_per_h_m2_mmhg) {
+  return kj_per_h_m2_mmhg * 1e3 / 3600.0 / kPascalPerMmHg / kSmithLatentHeat;  // kg/(m^2 s Pa)
+}
+
 struct EvaporationCoefficients {
-  double a = 30.6e-3 / 2.45e6;
-  double b = 32.1e-3 / 2.45e6;
+  double a = smith_coefficient_si(kSmithHeatCoefficientA);  // 2.602e-8 kg/(m^2 s Pa)
+  double b = smith_coefficient_si(kSmithHeatCoefficientB);  // 2.730e-8 kg/(m^3 Pa)
 };
 
 // What a surfel sees of the air at its position: vapor density (kg/m^3),
