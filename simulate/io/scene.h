@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "json_reader.h"
+#include "coupling/evaporation_rate_smith1994.h"
 #include "render_settings.h"
 
 namespace dp::io {
@@ -90,8 +91,8 @@ struct AirInflowSettings {
 // `simulation.coupling`: heat and water between air, particles and
 // textures (paper Sec. 5-6); defaults in simulate/core/coupling/.
 struct CouplingSectionSettings {
-  double evaporation_a = 30.6e-3 / 2.45e6;  // kg/(m^2 s Pa), Eq. 12's a
-  double evaporation_b = 32.1e-3 / 2.45e6;  // kg/(m^3 Pa), Eq. 12's b
+  double evaporation_a = EvaporationCoefficients{}.a;  // kg/(m^2 s Pa), Eq. 12's a
+  double evaporation_b = EvaporationCoefficients{}.b;  // kg/(m^3 Pa), Eq. 12's b
   bool heat_exchange = true, particle_evaporation = true, texel_exchange = true, particle_emission = true;
   bool latent_heat = false;
   double latent_heat_j_kg = 2.26e6;

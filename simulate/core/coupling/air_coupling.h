@@ -35,17 +35,24 @@ class AirCoupling {
     settings_ = settings;
     const MacGrid& g = air.grid();
     rigid_.build(exec, g, rigid_position);
+    rigid_run_of_cell_.assign(g.cell_count(), kNoRun);
+    if (rigid_.cells.active_cells() > 0)
+      exec.parallel_for(rigid_.cells.active_cells(), MarkRunOfCell{rigid_.cells.cell(), Exec::ptr(rigid_run_of_cell_)});
     texels_.resize(surfaces.count());
     for (std::size_t i = 0; i < surfaces.count(); ++i) texels_[i].prepare(exec, g, surfaces.texture(i).position, surfaces.texture(i).normal);
-    temperature_change_.resize(g.cell_count());
+    // Whole-grid arrays for AirGrid, written only at active cells (the
+    // liquid's are cleared where the last step wrote them).
+    temperature_change_.assign(g.cell_count(), 0.0f);
     cell_velocity_.resize(g.cell_count());
-    net_units_.resize(g.cell_count());
-    vapor_kg_.resize(g.cell_count());
+    vapor_kg_.assign(g.cell_count(), 0.0);
+    heat_written_.resize(0);
+    vapor_written_.resize(0);
   }
 
   // Alg. 1 line 12: liquid particles <-> cells, every step.
   void find_neighbours(const Exec& exec, const AirGrid<Exec>& air, const Buffer<Vec3>& liquid_position) {
     liquid_.build(exec, air.grid(), liquid_position);
+    velocity_fresh_ = false;
   }
 
   // Alg. 1 line 13 (Eq. 13-15): both particle sets' pairs from the
@@ -63,8 +70,16 @@ class AirCoupling {
                                                               dt, step, Exec::ptr(rigid_.pair_heat)});
     const MacGrid& g = air.grid();
     const double capacity = static_cast<double>(a.density) * a.specific_heat * g.cell_volume();
-    exec.parallel_for(g.cell_count(), GatherCellHeat{liquid_.cell_pairs(), rigid_.cell_pairs(), capacity, Exec::ptr(temperature_change_)});
-    air.add_cell_sources(exec, nullptr, Exec::ptr(temperature_change_));
+    float* change = Exec::ptr(temperature_change_);
+    if (heat_written_.size() > 0) exec.parallel_for(heat_written_.size(), FillCells<float>{Exec::ptr(heat_written_), 0.0f, change});
+    const CellPairs none{nullptr, nullptr, nullptr};
+    if (rigid_.size > 0)
+      exec.parallel_for(rigid_.cells.active_cells(), GatherCellHeat{rigid_.cells.cell(), rigid_.cell_pairs(), none, nullptr, capacity, change});
+    if (liquid_.size > 0)
+      exec.parallel_for(liquid_.cells.active_cells(), GatherCellHeat{liquid_.cells.cell(), liquid_.cell_pairs(), rigid_.cell_pairs(),
+                                                                     Exec::ptr(rigid_run_of_cell_), capacity, change});
+    heat_written_ = liquid_.cells.runs.key;
+    air.add_cell_sources(exec, nullptr, change);
   }
 
   // Alg. 1 line 15: particles -> cells; `units` lose what the air gains.
@@ -78,12 +93,15 @@ class AirCoupling {
                                                        Exec::ptr(id), settings_.coefficients, dt, kg_per_unit, step,
                                                        Exec::ptr(units), Exec::ptr(liquid_.pair_eva),
                                                        settings_.latent_heat ? settings_.latent_heat_j_kg / specific_heat : 0.0f});
-    const std::size_t cells = air.grid().cell_count();
-    exec.parallel_for(cells, UpdateCellVapor{Exec::ptr(liquid_.cells.offset), Exec::ptr(liquid_.cells.sorted_pair),
-                                             Exec::ptr(liquid_.pair_eva), nullptr, kg_per_unit, Exec::ptr(net_units_),
-                                             Exec::ptr(vapor_kg_)});
+    if (vapor_written_.size() > 0)
+      exec.parallel_for(vapor_written_.size(), FillCells<double>{Exec::ptr(vapor_written_), 0.0, Exec::ptr(vapor_kg_)});
+    const std::size_t active = liquid_.cells.active_cells();
+    net_units_.resize(active);
+    exec.parallel_for(active, UpdateCellVapor{liquid_.cells.cell(), liquid_.cells.begin(), Exec::ptr(liquid_.cells.sorted_pair),
+                                              Exec::ptr(liquid_.pair_eva), kg_per_unit, Exec::ptr(net_units_), Exec::ptr(vapor_kg_)});
+    vapor_written_ = liquid_.cells.runs.key;
     air.add_cell_sources(exec, Exec::ptr(vapor_kg_), nullptr);
-    liquid_to_air_ += exact_units_sum(exec, cells, Exec::ptr(net_units_));
+    liquid_to_air_ += exact_units_sum(exec, active, Exec::ptr(net_units_));
   }
 
   // Alg. 1 line 16: Alg. 2 for each textured rigid in turn.
@@ -101,6 +119,7 @@ class AirCoupling {
                                    Exec::ptr(t.max_mass), Exec::ptr(t.mass)};
       texels_to_air_ += texels_[i].exchange(exec, view, air, Exec::ptr(cell_velocity_), p);
     }
+    velocity_fresh_ = false;  // the next step's air moves
   }
 
   Units liquid_to_air_units() const { return liquid_to_air_; }
@@ -112,9 +131,16 @@ class AirCoupling {
   }
 
  private:
+  // Once a step, and only at the cells a stencil reads: the liquid's and
+  // the texels' active cells.
   void find_cell_velocity(const Exec& exec, const AirGrid<Exec>& air) {
+    if (velocity_fresh_) return;
     const AirCellsView v = air.view();
-    exec.parallel_for(air.grid().cell_count(), CellCentredVelocity{air.grid(), v.u, v.v, v.w, Exec::ptr(cell_velocity_)});
+    const CellCentredVelocity at{air.grid(), v.u, v.v, v.w, Exec::ptr(cell_velocity_)};
+    if (liquid_.cells.active_cells() > 0) exec.parallel_for(liquid_.cells.active_cells(), at_keys(liquid_.cells.cell(), at));
+    for (const auto& t : texels_)
+      if (t.active_cell_count() > 0) exec.parallel_for(t.active_cell_count(), at_keys(t.active_cells(), at));
+    velocity_fresh_ = true;
   }
 
   // One particle set's stencils, its pairs' transfers and the cells' index.
@@ -134,21 +160,24 @@ class AirCoupling {
       pair_heat.resize(pairs);
       pair_eva.resize(pairs);
       if (size > 0) exec.parallel_for(size, ComputeStencils{g, Exec::ptr(position), Exec::ptr(pair_cell), Exec::ptr(pair_alpha)});
-      cells.build(exec, pair_cell, g.cell_count());
+      cells.build(exec, pair_cell);
     }
     CellPairs cell_pairs() const {
       if (size == 0) return CellPairs{nullptr, nullptr, nullptr};
-      return CellPairs{Exec::ptr(cells.offset), Exec::ptr(cells.sorted_pair), Exec::ptr(pair_heat)};
+      return CellPairs{cells.begin(), Exec::ptr(cells.sorted_pair), Exec::ptr(pair_heat)};
     }
   };
 
   CouplingSettings settings_;
   ParticleStencils liquid_, rigid_;
   std::vector<TexelVaporExchange<Exec>> texels_;
-  Buffer<float> temperature_change_;
-  Buffer<Vec3> cell_velocity_;
-  Buffer<std::int64_t> net_units_;
-  Buffer<double> vapor_kg_;
+  Buffer<std::uint32_t> rigid_run_of_cell_;          // per grid cell: the rigid run holding it, or kNoRun
+  Buffer<float> temperature_change_;                 // per grid cell
+  Buffer<Vec3> cell_velocity_;                       // per grid cell, valid at the active cells
+  bool velocity_fresh_ = false;
+  Buffer<std::int64_t> net_units_;                   // per liquid active cell
+  Buffer<double> vapor_kg_;                          // per grid cell
+  Buffer<std::uint32_t> heat_written_, vapor_written_;  // the liquid cells the last step wrote
   Units liquid_to_air_ = 0, texels_to_air_ = 0;
 };
 

@@ -3,14 +3,16 @@
 // particle) at x meets the eight cells whose centres surround x, with the
 // trilinear weights alpha_sc of x (Sec. 5.1, 6.1). Stencils are stored as
 // eight (cell, alpha) pairs per surfel, pair p = 8 s + k; CellPairIndex
-// lists for every cell the pairs that name it, so a cell gathers what its
-// surfels give it instead of the surfels scattering into it.
+// lists for every cell some pair names the pairs that name it, so a cell
+// gathers what its surfels give it instead of the surfels scattering into
+// it, and cells no surfel reaches cost nothing.
 #include <cstdint>
 #include <vector>
 
 #include "air/cell_kind.h"
 #include "air/mac_grid.h"
 #include "backend/host_device.h"
+#include "backend/sorted_runs.h"
 #include "math/vec3.h"
 
 namespace dp {
@@ -18,8 +20,9 @@ namespace dp {
 inline constexpr int kStencilSize = 8;
 
 // Alpha weights of the eight cell centres around p; outside the grid the
-// stencil is clamped to the boundary cells (weights still sum to 1).
-DP_HD inline void trilinear_stencil(const MacGrid& g, Vec3 p, std::uint32_t* cell, float* alpha) {
+// stencil is clamped to the boundary cells (weights still sum to 1). Pair k
+// goes to cell[k * stride], alpha[k * stride].
+DP_HD inline void trilinear_stencil(const MacGrid& g, Vec3 p, std::uint32_t* cell, float* alpha, std::size_t stride = 1) {
   const Vec3 x = (1.0f / g.dx) * (p - g.origin) - Vec3{0.5f, 0.5f, 0.5f};
   int lo[3];
   float t[3];
@@ -40,8 +43,8 @@ DP_HD inline void trilinear_stencil(const MacGrid& g, Vec3 p, std::uint32_t* cel
   for (int k = 0; k < kStencilSize; ++k) {
     const int dx = k & 1, dy = (k >> 1) & 1, dz = (k >> 2) & 1;
     const int i = lo[0] + (dx && g.nx > 1 ? 1 : 0), j = lo[1] + (dy && g.ny > 1 ? 1 : 0), l = lo[2] + (dz && g.nz > 1 ? 1 : 0);
-    cell[k] = static_cast<std::uint32_t>(g.cell(i, j, l));
-    alpha[k] = (dx ? t[0] : 1 - t[0]) * (dy ? t[1] : 1 - t[1]) * (dz ? t[2] : 1 - t[2]);
+    cell[k * stride] = static_cast<std::uint32_t>(g.cell(i, j, l));
+    alpha[k * stride] = (dx ? t[0] : 1 - t[0]) * (dy ? t[1] : 1 - t[1]) * (dz ? t[2] : 1 - t[2]);
   }
 }
 
@@ -53,22 +56,49 @@ struct ComputeStencils {
   DP_HD void operator()(std::size_t s) const { trilinear_stencil(grid, position[s], pair_cell + kStencilSize * s, pair_alpha + kStencilSize * s); }
 };
 
+// Texels keep their pairs corner-major, pair (t, k) at k n + t for n
+// texels: the texels whose k-th corner is a given cell are neighbours in a
+// row of the atlas, so a cell gathering its pairs reads runs of adjacent
+// entries instead of one entry per cache line.
+DP_HD inline std::size_t corner_major_pair(std::size_t t, int k, std::size_t n) { return static_cast<std::size_t>(k) * n + t; }
+
 // A texel's stencil is taken one cell in front of it, at x_t + dx n_t: the
 // air it touches. At the texel itself, the eight cells around a thin rigid
 // (a mirror, a glass wall) are mostly the solid cells holding its particles
 // and, on a rigid lying near a cell face, air cells on its other side; one
 // cell along the normal the stencil always reaches the air on the texel's
 // own side (docs/paper-map.md, departures).
+// Pairs corner-major (corner_major_pair) over `count` texels.
 struct ComputeStencilsInFront {
   MacGrid grid;
   const Vec3* position;
   const Vec3* normal;  // unit
   std::uint32_t* pair_cell;
   float* pair_alpha;
+  std::size_t count;
   DP_HD void operator()(std::size_t s) const {
-    trilinear_stencil(grid, position[s] + grid.dx * normal[s], pair_cell + kStencilSize * s, pair_alpha + kStencilSize * s);
+    trilinear_stencil(grid, position[s] + grid.dx * normal[s], pair_cell + s, pair_alpha + s, count);
   }
 };
+
+// The same at the texels themselves (tests of Alg. 2 alone).
+struct ComputeTexelStencils {
+  MacGrid grid;
+  const Vec3* position;
+  std::uint32_t* pair_cell;
+  float* pair_alpha;
+  std::size_t count;
+  DP_HD void operator()(std::size_t s) const { trilinear_stencil(grid, position[s], pair_cell + s, pair_alpha + s, count); }
+};
+
+// A corner-major surfel's eight cells and alphas, gathered.
+DP_HD inline void load_corner_major(const std::uint32_t* pair_cell, const float* pair_alpha, std::size_t t, std::size_t n,
+                                    std::uint32_t* cell, float* alpha) {
+  for (int k = 0; k < kStencilSize; ++k) {
+    cell[k] = pair_cell[corner_major_pair(t, k, n)];
+    alpha[k] = pair_alpha[corner_major_pair(t, k, n)];
+  }
+}
 
 // Surfels exchange with the air cells of their stencil, weights
 // renormalised over those. A surfel with no air cell among its eight (with
@@ -92,45 +122,44 @@ DP_HD inline float air_weights(const std::uint8_t* kind, const std::uint32_t* ce
   return sum > 0 ? sum : stencil_weights(kind, cell, alpha, w, true);
 }
 
-// First pair of each cell in the pairs sorted by cell (binary search), so
-// that cell c's pairs are sorted_pair[offset[c], offset[c + 1]).
-struct FindCellPairOffsets {
-  const std::uint32_t* sorted_cell;
-  std::size_t pairs;
-  std::uint32_t* offset;
-  DP_HD void operator()(std::size_t c) const {
-    std::size_t lo = 0, hi = pairs;
-    while (lo < hi) {
-      const std::size_t mid = (lo + hi) / 2;
-      if (sorted_cell[mid] < c) lo = mid + 1;
-      else hi = mid;
-    }
-    offset[c] = static_cast<std::uint32_t>(lo);
-  }
-};
-
 struct Iota {
   std::uint32_t* out;
   DP_HD void operator()(std::size_t i) const { out[i] = static_cast<std::uint32_t>(i); }
 };
 
+// The pairs that name a cell, for the cells some pair names (the active
+// cells): run r is cell runs.key[r], whose pairs are
+// sorted_pair[runs.begin[r], runs.begin[r + 1]) in surfel order. Cell-side
+// kernels run over these runs, not over the whole grid.
 template <class Exec>
 struct CellPairIndex {
   template <class T>
   using Buffer = typename Exec::template Buffer<T>;
-  Buffer<std::uint32_t> offset;       // cell_count + 1
   Buffer<std::uint32_t> sorted_pair;  // pairs in cell order (stable: surfel order within a cell)
   Buffer<std::uint32_t> sorted_cell;
+  SortedRuns<Exec> runs;
 
-  void build(const Exec& exec, const Buffer<std::uint32_t>& pair_cell, std::size_t cell_count) {
+  void build(const Exec& exec, const Buffer<std::uint32_t>& pair_cell) {
     const std::size_t n = pair_cell.size();
     sorted_cell = pair_cell;
     sorted_pair.resize(n);
     exec.parallel_for(n, Iota{Exec::ptr(sorted_pair)});
     exec.sort_by_key(sorted_cell, sorted_pair);
-    offset.resize(cell_count + 1);
-    exec.parallel_for(cell_count + 1, FindCellPairOffsets{Exec::ptr(sorted_cell), n, Exec::ptr(offset)});
+    runs.build(exec, sorted_cell);
   }
+  std::size_t active_cells() const { return runs.count; }
+  const std::uint32_t* cell() const { return Exec::ptr(runs.key); }
+  const std::uint32_t* begin() const { return Exec::ptr(runs.begin); }
+};
+
+// Sets out[c] = value for each listed cell c (clearing what an earlier
+// list wrote into a whole-grid array).
+template <class T>
+struct FillCells {
+  const std::uint32_t* cell;
+  T value;
+  T* out;
+  DP_HD void operator()(std::size_t r) const { out[cell[r]] = value; }
 };
 
 }  // namespace dp

@@ -86,29 +86,48 @@ struct ExchangeParticleCellHeat {
   }
 };
 
-// The pairs of one particle set that name each cell.
+// The pairs of one particle set, by active cell (CellPairIndex's runs).
 struct CellPairs {
-  const std::uint32_t* offset;       // null: the set is empty
+  const std::uint32_t* begin;        // null: the set is empty
   const std::uint32_t* sorted_pair;
   const double* pair_heat;
-  DP_HD double sum(std::size_t c) const {
+  DP_HD double sum(std::uint32_t run) const {
     double q = 0;
-    if (offset)
-      for (std::uint32_t p = offset[c]; p < offset[c + 1]; ++p) q += pair_heat[sorted_pair[p]];
+    for (std::uint32_t p = begin[run]; p < begin[run + 1]; ++p) q += pair_heat[sorted_pair[p]];
     return q;
   }
 };
 
-// Eq. 15: each cell gathers the heat of its liquid and rigid pairs, as a
-// temperature change.
-struct GatherCellHeat {
-  CellPairs liquid, rigid;
-  double heat_capacity;  // rho_c C_c V_c
-  float* temperature_change;
+inline constexpr std::uint32_t kNoRun = 0xFFFFFFFFu;
 
-  DP_HD void operator()(std::size_t c) const {
-    temperature_change[c] = static_cast<float>((liquid.sum(c) + rigid.sum(c)) / heat_capacity);
+// Eq. 15: each cell gathers the heat of its liquid and rigid pairs, as a
+// temperature change. Run over the rigid particles' cells first (their heat
+// alone), then over the liquid particles' cells, which add the rigid pairs
+// of the same cell found through `rigid_run_of_cell`.
+struct GatherCellHeat {
+  const std::uint32_t* cell;               // the runs' cells
+  CellPairs own;                           // the set whose runs these are
+  CellPairs rigid;                         // liquid pass: the rigid set (begin null: none)
+  const std::uint32_t* rigid_run_of_cell;  // liquid pass: per grid cell, its rigid run or kNoRun
+  double heat_capacity;                    // rho_c C_c V_c
+  float* temperature_change;               // per grid cell
+
+  DP_HD void operator()(std::size_t r) const {
+    const std::uint32_t c = cell[r];
+    double q = own.sum(static_cast<std::uint32_t>(r));
+    if (rigid.begin) {
+      const std::uint32_t rr = rigid_run_of_cell[c];
+      q = q + (rr != kNoRun ? rigid.sum(rr) : 0.0);
+    }
+    temperature_change[c] = static_cast<float>(q / heat_capacity);
   }
+};
+
+// Per grid cell, the run of a CellPairIndex that holds it.
+struct MarkRunOfCell {
+  const std::uint32_t* cell;
+  std::uint32_t* run_of_cell;
+  DP_HD void operator()(std::size_t r) const { run_of_cell[cell[r]] = static_cast<std::uint32_t>(r); }
 };
 
 }  // namespace dp

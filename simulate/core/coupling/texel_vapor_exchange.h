@@ -29,14 +29,20 @@ class TexelVaporExchange {
     pair_cond_.resize(pairs);
     if (texel_normal.size() == texels_)
       exec.parallel_for(texels_, ComputeStencilsInFront{grid, Exec::ptr(texel_position), Exec::ptr(texel_normal), Exec::ptr(pair_cell_),
-                                                        Exec::ptr(pair_alpha_)});
+                                                        Exec::ptr(pair_alpha_), texels_});
     else
-      exec.parallel_for(texels_, ComputeStencils{grid, Exec::ptr(texel_position), Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_)});
-    cells_.build(exec, pair_cell_, grid.cell_count());
+      exec.parallel_for(texels_, ComputeTexelStencils{grid, Exec::ptr(texel_position), Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_),
+                                                      texels_});
+    cells_.build(exec, pair_cell_);
     for (auto* b : {&cond_num_, &cond_den_}) b->resize(grid.cell_count());
-    net_units_.resize(grid.cell_count());
-    vapor_kg_.resize(grid.cell_count());
+    net_units_.resize(cells_.active_cells());
+    // Written only at the active cells, which never change: the rest stays 0.
+    vapor_kg_.assign(grid.cell_count(), 0.0);
   }
+
+  // The cells the texels exchange with (their stencils' cells), ascending.
+  const std::uint32_t* active_cells() const { return cells_.cell(); }
+  std::size_t active_cell_count() const { return cells_.active_cells(); }
 
   // One step of Alg. 2; returns the units the air gained (negative: lost).
   // `cell_velocity`: the cell-centred air velocity of this step.
@@ -44,19 +50,18 @@ class TexelVaporExchange {
                         const ExchangeParameters& p) {
     if (texels_ == 0) return 0;
     const MacGrid& g = air.grid();
-    const std::size_t cells = g.cell_count();
+    const std::size_t active = cells_.active_cells();
     const AirCellsView view = air.view();
-    exec.parallel_for(texels_, EstimateTexelExchange{texel, view, cell_velocity, Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_), p,
+    exec.parallel_for(texels_, EstimateTexelExchange{texel, view, cell_velocity, Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_), texels_, p,
                                                      Exec::ptr(pair_eva_), Exec::ptr(pair_cond_)});
-    exec.parallel_for(cells, BalanceCellCondensation{Exec::ptr(cells_.offset), Exec::ptr(cells_.sorted_pair), Exec::ptr(pair_eva_),
-                                                     Exec::ptr(pair_cond_), view.vapor, static_cast<double>(g.cell_volume()),
-                                                     p.kg_per_unit, Exec::ptr(cond_num_), Exec::ptr(cond_den_)});
-    exec.parallel_for(texels_, UpdateTexelMass{Exec::ptr(pair_cell_), Exec::ptr(pair_eva_), Exec::ptr(cond_num_),
+    exec.parallel_for(active, BalanceCellCondensation{cells_.cell(), cells_.begin(), Exec::ptr(cells_.sorted_pair), Exec::ptr(pair_eva_),
+                                                      Exec::ptr(pair_cond_), view.vapor, static_cast<double>(g.cell_volume()),
+                                                      p.kg_per_unit, Exec::ptr(cond_num_), Exec::ptr(cond_den_),
+                                                      Exec::ptr(net_units_), Exec::ptr(vapor_kg_)});
+    exec.parallel_for(texels_, UpdateTexelMass{Exec::ptr(pair_cell_), texels_, Exec::ptr(pair_eva_), Exec::ptr(cond_num_),
                                                Exec::ptr(cond_den_), Exec::ptr(pair_cond_), texel.mass});
-    exec.parallel_for(cells, UpdateCellVapor{Exec::ptr(cells_.offset), Exec::ptr(cells_.sorted_pair), Exec::ptr(pair_eva_),
-                                             Exec::ptr(pair_cond_), p.kg_per_unit, Exec::ptr(net_units_), Exec::ptr(vapor_kg_)});
     air.add_cell_sources(exec, Exec::ptr(vapor_kg_), nullptr);
-    return exact_units_sum(exec, cells, Exec::ptr(net_units_));
+    return exact_units_sum(exec, active, Exec::ptr(net_units_));
   }
 
  private:
@@ -64,8 +69,8 @@ class TexelVaporExchange {
   Buffer<std::uint32_t> pair_cell_;
   Buffer<float> pair_alpha_;
   Buffer<TexelMassUnits> pair_eva_, pair_cond_, cond_num_, cond_den_;
-  Buffer<std::int64_t> net_units_;
-  Buffer<double> vapor_kg_;
+  Buffer<std::int64_t> net_units_;  // per active cell
+  Buffer<double> vapor_kg_;         // per grid cell
   CellPairIndex<Exec> cells_;
 };
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "backend/sorted_runs.h"
 #include "simulation.h"
 #include "simulation_state.h"
 #include "sph/kernel_cubic_spline.h"
@@ -43,6 +44,11 @@ class SurfaceTextures {
     Buffer<std::uint32_t> seed_texel_offset, seed_texel_index;
     NeighborListBuffers<Exec> rigid_neighbours;  // texel -> sorted rigid particles within h
     Buffer<float> rigid_weight;                  // Eq. 7's V_k W-bar_tk per neighbour-list entry
+    // The liquid grid's cells that hold texels and each texel's entry among
+    // them (wetting history); built on the first step.
+    SortedRuns<Exec> liquid_cells;
+    Buffer<std::uint32_t> liquid_cell_slot;
+    UniformGrid liquid_grid{};  // the grid those cells are of
 
     std::size_t size() const { return setup.texels.size(); }
     NeighborList rigid_list() const { return NeighborList{Exec::ptr(rigid_neighbours.offset), Exec::ptr(rigid_neighbours.index)}; }
@@ -108,6 +114,7 @@ class SurfaceTextures {
       Exec::upload(tex.temperature, s.temperature);
       Exec::upload(tex.wetting, s.wetting);
     }
+    interpolated_ = false;
   }
 
   std::vector<SurfaceSnapshot> snapshots() const {
@@ -166,7 +173,16 @@ class SurfaceTextures {
     Exec::upload(tex.seed_texel_index, tex.seeds.texel_index);
   }
 
+  // Eq. 7 is a fixed linear map of the rigid temperatures: when none of
+  // them changed since the last interpolation (rigids held at their
+  // temperature, or no heat reaching them), neither do the texels'.
   void interpolate_temperatures(const Exec& exec, const Buffer<float>& rigid_temperature) {
+    const std::size_t n = rigid_temperature.size();
+    if (interpolated_ && seen_rigid_temperature_.size() == n &&
+        exec.find_first(n, FloatsDiffer{Exec::ptr(rigid_temperature), Exec::ptr(seen_rigid_temperature_)}) == n)
+      return;
+    seen_rigid_temperature_ = rigid_temperature;
+    interpolated_ = true;
     for (Texture& tex : textures_)
       exec.parallel_for(tex.size(), InterpolateTexelTemperature{tex.rigid_list(), Exec::ptr(tex.rigid_weight),
                                                                 Exec::ptr(rigid_temperature), Exec::ptr(tex.temperature)});
@@ -174,21 +190,41 @@ class SurfaceTextures {
 
   void record_wetting(const Exec& exec, float dt, const GridView& liquid, std::size_t liquid_count) {
     if (textures_.empty()) return;
-    const std::size_t cells = liquid.grid.cell_count();
-    near_liquid_.resize(cells);
-    exec.parallel_for(cells, MarkCellsNearLiquid{liquid, Exec::ptr(near_liquid_)});
     for (Texture& tex : textures_) {
+      if (tex.size() == 0) continue;
+      if (tex.liquid_cell_slot.size() != tex.size() || !same_grid(tex.liquid_grid, liquid.grid)) find_liquid_cells(exec, tex, liquid.grid);
+      near_liquid_.resize(tex.liquid_cells.count);
+      exec.parallel_for(tex.liquid_cells.count, MarkCellsNearLiquid{liquid, Exec::ptr(near_liquid_), Exec::ptr(tex.liquid_cells.key)});
       const float decay = tex.setup.wetting_decay;
       const float dry = decay > 0 ? std::exp(-dt / decay) : 0.0f;
       // Without liquid nothing touches; the history only fades.
       const float r2 = liquid_count > 0 ? contact_radius_ * contact_radius_ : -1.0f;
       exec.parallel_for(tex.size(), RecordWetting{liquid, Exec::ptr(near_liquid_), Exec::ptr(tex.position), Exec::ptr(tex.normal),
-                                                  r2, dry, Exec::ptr(tex.wetting)});
+                                                  r2, dry, Exec::ptr(tex.wetting), Exec::ptr(tex.liquid_cell_slot)});
     }
   }
 
+  static bool same_grid(const UniformGrid& h, const UniformGrid& g) {
+    return g.origin.x == h.origin.x && g.origin.y == h.origin.y && g.origin.z == h.origin.z && g.cell_size == h.cell_size &&
+           g.nx == h.nx && g.ny == h.ny && g.nz == h.nz;
+  }
+
+  void find_liquid_cells(const Exec& exec, Texture& tex, const UniformGrid& g) {
+    const std::size_t n = tex.size();
+    Buffer<std::uint32_t> key(n), texel(n);
+    exec.parallel_for(n, ComputeCellKeys{g, Exec::ptr(tex.position), Exec::ptr(key), Exec::ptr(texel)});
+    exec.sort_by_key(key, texel);
+    tex.liquid_cells.build(exec, key);
+    tex.liquid_cell_slot.resize(n);
+    exec.parallel_for(tex.liquid_cells.count, TexelSlotOfRun{Exec::ptr(tex.liquid_cells.begin), Exec::ptr(texel),
+                                                             Exec::ptr(tex.liquid_cell_slot)});
+    tex.liquid_grid = g;
+  }
+
   std::vector<Texture> textures_;
-  Buffer<std::uint8_t> near_liquid_;  // per liquid grid cell, this step
+  Buffer<std::uint8_t> near_liquid_;  // per listed cell of one texture, this step
+  Buffer<float> seen_rigid_temperature_;  // at the last Eq. 7 interpolation
+  bool interpolated_ = false;
   CubicSplineKernel kernel_{};
   double kg_per_unit_ = 0;
   float contact_radius_ = 0;

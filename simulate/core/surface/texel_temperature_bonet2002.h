@@ -67,4 +67,11 @@ struct InterpolateTexelTemperature {
   }
 };
 
+// a[i] != b[i] (NaN differs from everything): has a temperature changed?
+struct FloatsDiffer {
+  const float* a;
+  const float* b;
+  DP_HD bool operator()(std::size_t i) const { return a[i] != b[i]; }
+};
+
 }  // namespace dp

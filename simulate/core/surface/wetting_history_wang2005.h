@@ -18,12 +18,16 @@ namespace dp {
 
 // Per grid cell: 1 when any liquid particle lies in the 27 cells around it.
 // Most texels are far from the liquid; this lets each of them decide with
-// one load instead of walking nine rows of cells.
+// one load instead of walking nine rows of cells. With `cells`, only for
+// the listed cells (those holding texels), near[s] for cells[s]: the grid
+// around a small drop is mostly empty air that no texel reads.
 struct MarkCellsNearLiquid {
   GridView liquid;
   std::uint8_t* near;
+  const std::uint32_t* cells = nullptr;  // null: every cell, near[c]
 
-  DP_HD void operator()(std::size_t c) const {
+  DP_HD void operator()(std::size_t s) const {
+    const std::size_t c = cells ? cells[s] : s;
     const UniformGrid& g = liquid.grid;
     const int i = static_cast<int>(c % g.nx), j = static_cast<int>((c / g.nx) % g.ny), k = static_cast<int>(c / (static_cast<std::size_t>(g.nx) * g.ny));
     const int i0 = i > 0 ? i - 1 : 0, i1 = i + 1 < g.nx ? i + 1 : g.nx - 1;
@@ -32,7 +36,7 @@ struct MarkCellsNearLiquid {
       for (int jj = j - 1; jj <= j + 1; ++jj)
         if (kk >= 0 && kk < g.nz && jj >= 0 && jj < g.ny)
           any = any || liquid.cell_begin[g.linear(i0, jj, kk)] < liquid.cell_end[g.linear(i1, jj, kk)];
-    near[c] = any ? 1 : 0;
+    near[s] = any ? 1 : 0;
   }
 };
 
@@ -44,15 +48,27 @@ struct RecordWetting {
   float contact_radius2;        // m^2
   float dry_factor;             // exp(-dt / decay time)
   float* wetting;
+  const std::uint32_t* near_slot = nullptr;  // per texel, its cell's entry in `near` (null: the cell's key)
 
   DP_HD void operator()(std::size_t t) const {
     const Vec3 xt = texel_position[t], nt = texel_normal[t];
     bool touched = false;
-    if (near[liquid.grid.key_of(xt)]) liquid.for_each_near(xt, [&](std::uint32_t i) {
+    if (near[near_slot ? near_slot[t] : liquid.grid.key_of(xt)]) liquid.for_each_near(xt, [&](std::uint32_t i) {
       const Vec3 d = liquid.position[i] - xt;
       touched = touched || (length_squared(d) < contact_radius2 && dot(d, nt) >= 0.0f);
     });
     wetting[t] = touched ? 1.0f : wetting[t] * dry_factor;
+  }
+};
+
+// Once per texture: each texel's slot in the list of the liquid grid's
+// cells that hold texels (runs of the texels sorted by cell).
+struct TexelSlotOfRun {
+  const std::uint32_t* run_begin;
+  const std::uint32_t* sorted_texel;
+  std::uint32_t* slot;
+  DP_HD void operator()(std::size_t r) const {
+    for (std::uint32_t q = run_begin[r]; q < run_begin[r + 1]; ++q) slot[sorted_texel[q]] = static_cast<std::uint32_t>(r);
   }
 };
 

@@ -48,7 +48,7 @@ TEST(coupling_Stencil, TexelsExchangeWithTheAirOnTheirOwnSideOfAThinPlate) {
       const Vec3 position{0.1f, y0, 0.1f}, normal{0, side, 0};
       std::uint32_t cell[kStencilSize];
       float alpha[kStencilSize];
-      ComputeStencilsInFront{g, &position, &normal, cell, alpha}(0);
+      ComputeStencilsInFront{g, &position, &normal, cell, alpha, 1}(0);  // one texel: corner-major is contiguous
       float air = 0.0f;
       for (int k = 0; k < kStencilSize; ++k) {
         int i, j, l;
