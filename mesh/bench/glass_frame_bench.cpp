@@ -161,9 +161,9 @@ int main(int argc, char** argv) {
   std::printf("glass: %zu triangles, BVH %.3f s; corrected nodes %zu of %zu in band, %zu wall queries\n",
               std::size_t(2 * 360 * 64 * 2 + 2 * 360), bvh_seconds, c.correction.corrected, c.correction.considered,
               c.correction.wall_queries);
-  std::printf("plain:     %.3f s per frame (field %.3f s), %zu triangles, volume %.4g m^3\n", median(plain),
+  std::printf("plain:     %.3f s per frame (field %.3f s), %zu triangles, volume %.7g m^3\n", median(plain),
               median(plain_field), last_plain.mesh.triangles.size(), dp::mesh::enclosed_volume(last_plain.mesh));
-  std::printf("corrected: %.3f s per frame (field %.3f s), %zu triangles, volume %.4g m^3, overhead %+.1f %%\n",
+  std::printf("corrected: %.3f s per frame (field %.3f s), %zu triangles, volume %.7g m^3, overhead %+.1f %%\n",
               median(corrected), median(corrected_field), last_corrected.mesh.triangles.size(),
               dp::mesh::enclosed_volume(last_corrected.mesh), 100 * (median(corrected) / median(plain) - 1));
   std::printf("OpenVDB rasterizeSmoothSpheres + volumeToMesh: %.3f s, %zu triangles; plain / OpenVDB = %.2f\n",
