@@ -87,13 +87,14 @@ ScalarGrid sample_liquid_field(const LiquidParticles& particles, double kernel_r
       if (near.empty()) return;
       BlockResult& result = results[index];
       result.active = true;
-      double wall_gap = 0;  // a lower bound of every node's distance to the walls
+      // The walls' distance from the block's centre, which bounds it at any xbar.
+      const Vec3d centre = 0.5 * (b.lo + b.hi);
+      double centre_wall_distance = 0;
       if (with_walls) {
-        const Vec3d centre = 0.5 * (b.lo + b.hi);
         const double half_diagonal = 0.5 * length(b.hi - b.lo);
         const WallPoint w = correction->walls().closest(centre, half_diagonal + wall_reach);
         result.near_walls = w.found;
-        wall_gap = std::max(0.0, w.distance - half_diagonal);
+        centre_wall_distance = w.distance;
       }
       const int ny = b.nodes[1][1] - b.nodes[1][0], nz = b.nodes[2][1] - b.nodes[2][0];
       const BlockKernelSums sums = gather_block_kernel_sums(b.lo, ny, nz, box.voxel_size, particles, near,
@@ -104,8 +105,12 @@ ScalarGrid sample_liquid_field(const LiquidParticles& particles, double kernel_r
             const std::size_t local = sums.node(i - b.nodes[0][0], j - b.nodes[1][0], k - b.nodes[2][0]);
             const LocalFluid f = local_fluid(sums.at(local));
             double phi = zhu_bridson_distance(f, kernel_radius);
-            if (result.near_walls && correction->wall_within_reach(wall_gap, phi, f.mean_radius))
-              phi = correction->distance(box.node_position(i, j, k), f, phi, result.correction);
+            if (result.near_walls) {
+              const Vec3d x = box.node_position(i, j, k);
+              const double xbar_wall_gap = centre_wall_distance - length(x + f.mean_offset - centre);
+              if (correction->wall_within_reach(xbar_wall_gap, f.mean_radius))
+                phi = correction->distance(x, f, phi, result.correction);
+            }
             grid.values[static_cast<std::size_t>(box.node_index(i, j, k))] = static_cast<float>(phi);
           }
     });
