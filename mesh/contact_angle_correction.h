@@ -62,10 +62,12 @@ class ContactAngleCorrection_HochstetterKolb2017 {
     return phi0 > -1.5 * rbar && phi0 < outside_band_ * rbar;
   }
 
-  // Whether a wall can be within reach of xbar, for a node at least
-  // `wall_gap` from every wall: xbar is |x - xbar| = phi0 + rbar from x.
-  bool wall_within_reach(double wall_gap, double phi0, double rbar) const {
-    return wall_gap < phi0 + (1 + settings_.reach_factor) * rbar;
+  // Whether a wall can be within reach of xbar, given a lower bound of
+  // xbar's distance to every wall (the walls' distance is 1-Lipschitz, so a
+  // distance known at one point bounds it at xbar). Only then can the
+  // query in distance() find a wall: skipping the rest changes nothing.
+  bool wall_within_reach(double xbar_wall_gap, double rbar) const {
+    return xbar_wall_gap < (settings_.reach_factor + 1e-6) * rbar;  // the margin covers rounding
   }
 
   // How far from x a wall can be and still matter at x: xbar lies within

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "block_kernel_sums.h"
 #include "particle_cell_grid.h"
 #include "zhu_bridson.h"
 
@@ -51,82 +52,6 @@ std::vector<std::uint32_t> particles_near(const Block& b, const ParticleCellGrid
   return near;
 }
 
-// Kernel sums at every node of the block, particle by particle, stored
-// component by component so that the loop along a row of nodes vectorises.
-struct BlockSums {
-  int nx = 0, ny = 0, nz = 0;
-  std::vector<double> weight, offset_x, offset_y, offset_z, radius, velocity_x, velocity_y, velocity_z;
-
-  KernelSums at(std::size_t n) const {
-    KernelSums s;
-    s.weight = weight[n];
-    s.offset = {offset_x[n], offset_y[n], offset_z[n]};
-    s.radius = radius[n];
-    if (!velocity_x.empty()) s.velocity = {velocity_x[n], velocity_y[n], velocity_z[n]};
-    return s;
-  }
-};
-
-BlockSums gather_kernel_sums(const Block& b, const GridBox& box, const LiquidParticles& p,
-                             const std::vector<std::uint32_t>& near, double kernel_radius, bool with_velocity) {
-  BlockSums sums;
-  sums.nx = b.nodes[0][1] - b.nodes[0][0], sums.ny = b.nodes[1][1] - b.nodes[1][0], sums.nz = b.nodes[2][1] - b.nodes[2][0];
-  const std::size_t count = std::size_t(sums.nx) * sums.ny * sums.nz;
-  for (auto* v : {&sums.weight, &sums.offset_x, &sums.offset_y, &sums.offset_z, &sums.radius}) v->assign(count, 0.0);
-  with_velocity = with_velocity && !p.velocity.empty();
-  if (with_velocity)
-    for (auto* v : {&sums.velocity_x, &sums.velocity_y, &sums.velocity_z}) v->assign(count, 0.0);
-  const double h = box.voxel_size, r2 = kernel_radius * kernel_radius, inverse_r2 = 1 / r2;
-  for (std::uint32_t i : near) {
-    // In block coordinates (from the block's first node), so that offsets
-    // do not cancel large world coordinates.
-    const Vec3d local = p.position[i] - b.lo;
-    const double ri = p.radius[i];
-    const Vec3d vi = with_velocity ? p.velocity[i] : Vec3d{};
-    const int k0 = std::max(0, int(std::ceil((local.z - kernel_radius) / h)));
-    const int k1 = std::min(sums.nz - 1, int(std::floor((local.z + kernel_radius) / h)));
-    for (int k = k0; k <= k1; ++k) {
-      const double dz = local.z - h * k;
-      const int j0 = std::max(0, int(std::ceil((local.y - kernel_radius) / h)));
-      const int j1 = std::min(sums.ny - 1, int(std::floor((local.y + kernel_radius) / h)));
-      for (int j = j0; j <= j1; ++j) {
-        const double dy = local.y - h * j, dyz2 = dy * dy + dz * dz;
-        if (dyz2 >= r2) continue;
-        // Only the nodes of this row inside the kernel's sphere.
-        const double half_chord = std::sqrt(r2 - dyz2);
-        const int i0 = std::max(0, int(std::ceil((local.x - half_chord) / h)));
-        const int i1 = std::min(sums.nx - 1, int(std::floor((local.x + half_chord) / h)));
-        const std::size_t row = (std::size_t(k) * sums.ny + j) * sums.nx;
-        double* w = sums.weight.data() + row;
-        double* ox = sums.offset_x.data() + row;
-        double* oy = sums.offset_y.data() + row;
-        double* oz = sums.offset_z.data() + row;
-        double* rs = sums.radius.data() + row;
-        for (int n = i0; n <= i1; ++n) {
-          const double dx = local.x - h * n;  // x_i - x
-          const double t = std::max(0.0, 1.0 - (dx * dx + dyz2) * inverse_r2);
-          const double kernel = t * t * t;  // zhu_bridson_kernel, inlined for the vectoriser
-          w[n] += kernel;
-          ox[n] += kernel * dx;
-          oy[n] += kernel * dy;
-          oz[n] += kernel * dz;
-          rs[n] += kernel * ri;
-        }
-        if (with_velocity)
-          for (int n = i0; n <= i1; ++n) {
-            const double dx = local.x - h * n;
-            const double t = std::max(0.0, 1.0 - (dx * dx + dyz2) * inverse_r2);
-            const double kernel = t * t * t;
-            sums.velocity_x[row + n] += kernel * vi.x;
-            sums.velocity_y[row + n] += kernel * vi.y;
-            sums.velocity_z[row + n] += kernel * vi.z;
-          }
-      }
-    }
-  }
-  return sums;
-}
-
 double largest_radius(const LiquidParticles& p) {
   double r = 0;
   for (double ri : p.radius) r = std::max(r, ri);
@@ -162,24 +87,30 @@ ScalarGrid sample_liquid_field(const LiquidParticles& particles, double kernel_r
       if (near.empty()) return;
       BlockResult& result = results[index];
       result.active = true;
-      double wall_gap = 0;  // a lower bound of every node's distance to the walls
+      // The walls' distance from the block's centre, which bounds it at any xbar.
+      const Vec3d centre = 0.5 * (b.lo + b.hi);
+      double centre_wall_distance = 0;
       if (with_walls) {
-        const Vec3d centre = 0.5 * (b.lo + b.hi);
         const double half_diagonal = 0.5 * length(b.hi - b.lo);
         const WallPoint w = correction->walls().closest(centre, half_diagonal + wall_reach);
         result.near_walls = w.found;
-        wall_gap = std::max(0.0, w.distance - half_diagonal);
+        centre_wall_distance = w.distance;
       }
-      const BlockSums sums = gather_kernel_sums(b, box, particles, near, kernel_radius, result.near_walls);
-      const int nx = b.nodes[0][1] - b.nodes[0][0], ny = b.nodes[1][1] - b.nodes[1][0];
+      const int ny = b.nodes[1][1] - b.nodes[1][0], nz = b.nodes[2][1] - b.nodes[2][0];
+      const BlockKernelSums sums = gather_block_kernel_sums(b.lo, ny, nz, box.voxel_size, particles, near,
+                                                            kernel_radius, result.near_walls);
       for (int k = b.nodes[2][0]; k < b.nodes[2][1]; ++k)
         for (int j = b.nodes[1][0]; j < b.nodes[1][1]; ++j)
           for (int i = b.nodes[0][0]; i < b.nodes[0][1]; ++i) {
-            const std::size_t local = (std::size_t(k - b.nodes[2][0]) * ny + (j - b.nodes[1][0])) * nx + (i - b.nodes[0][0]);
+            const std::size_t local = sums.node(i - b.nodes[0][0], j - b.nodes[1][0], k - b.nodes[2][0]);
             const LocalFluid f = local_fluid(sums.at(local));
             double phi = zhu_bridson_distance(f, kernel_radius);
-            if (result.near_walls && correction->wall_within_reach(wall_gap, phi, f.mean_radius))
-              phi = correction->distance(box.node_position(i, j, k), f, phi, result.correction);
+            if (result.near_walls) {
+              const Vec3d x = box.node_position(i, j, k);
+              const double xbar_wall_gap = centre_wall_distance - length(x + f.mean_offset - centre);
+              if (correction->wall_within_reach(xbar_wall_gap, f.mean_radius))
+                phi = correction->distance(x, f, phi, result.correction);
+            }
             grid.values[static_cast<std::size_t>(box.node_index(i, j, k))] = static_cast<float>(phi);
           }
     });

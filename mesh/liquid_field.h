@@ -10,13 +10,13 @@
 // of threads. Blocks run in parallel (TBB).
 #include <cstddef>
 
+#include "block_kernel_sums.h"
 #include "contact_angle_correction.h"
 #include "liquid_particles.h"
 #include "scalar_grid.h"
 
 namespace dp::mesh {
 
-inline constexpr int kFieldBlock = 8;  // nodes per block edge
 
 struct LiquidFieldCounts {
   std::size_t blocks = 0, active_blocks = 0;
