@@ -52,12 +52,39 @@ struct RestrictResidual {
   const float* r;
   float* b;
   DP_HD void operator()(std::size_t c) const {
+    int I, J, K;
+    coarse.coords(c, I, J, K);
+    (*this)(I, J, K);
+  }
+  DP_HD void operator()(int I, int J, int K) const {
+    const std::size_t c = coarse.index(I, J, K);
     if (!coarse.unknown[c]) {
       b[c] = 0.0f;
       return;
     }
-    int I, J, K;
-    coarse.coords(c, I, J, K);
+    const bool interior = 2 * I >= 1 && 2 * I + 2 < fine.nx && 2 * J >= 1 && 2 * J + 2 < fine.ny && 2 * K >= 1 &&
+                          2 * K + 2 < fine.nz;
+    b[c] = 0.5f * (interior ? interior_sum(I, J, K) : boundary_sum(I, J, K));
+  }
+
+  // All 4 x 4 x 4 fine cells exist: walk them by offsets, with the axis
+  // weights of prolongation_weight (1/4, 3/4, 3/4, 1/4) as constants; the
+  // terms and their order are those of boundary_sum.
+  DP_HD float interior_sum(int I, int J, int K) const {
+    const float w[4] = {0.25f, 0.75f, 0.75f, 0.25f};
+    const std::size_t row = static_cast<std::size_t>(fine.nx), slab = row * fine.ny;
+    const float* base = r + fine.index(2 * I - 1, 2 * J - 1, 2 * K - 1);
+    float s = 0.0f;
+    for (int dk = 0; dk < 4; ++dk)
+      for (int dj = 0; dj < 4; ++dj) {
+        const float wjk = w[dk] * w[dj];
+        const float* line = base + dk * slab + dj * row;
+        for (int di = 0; di < 4; ++di) s += wjk * w[di] * line[di];
+      }
+    return s;
+  }
+
+  DP_HD float boundary_sum(int I, int J, int K) const {
     float s = 0.0f;
     for (int fk = 2 * K - 1; fk <= 2 * K + 2; ++fk) {
       if (fk < 0 || fk >= fine.nz) continue;
@@ -71,7 +98,7 @@ struct RestrictResidual {
         }
       }
     }
-    b[c] = 0.5f * s;
+    return s;
   }
 };
 
@@ -81,9 +108,13 @@ struct ProlongAndAdd {
   const float* e;
   float* x;
   DP_HD void operator()(std::size_t f) const {
-    if (!fine.unknown[f]) return;
     int i, j, k;
     fine.coords(f, i, j, k);
+    (*this)(i, j, k);
+  }
+  DP_HD void operator()(int i, int j, int k) const {
+    const std::size_t f = fine.index(i, j, k);
+    if (!fine.unknown[f]) return;
     const int ci[2] = {i >> 1, (i & 1) ? (i >> 1) + 1 : (i >> 1) - 1};
     const int cj[2] = {j >> 1, (j & 1) ? (j >> 1) + 1 : (j >> 1) - 1};
     const int ck[2] = {k >> 1, (k & 1) ? (k >> 1) + 1 : (k >> 1) - 1};
@@ -183,6 +214,13 @@ class MultigridPreconditioner {
     Buffer<float> x, b, tmp;
   };
 
+  // The first sweep from x = 0 needs neither the clear nor A x.
+  void smooth_from_zero(const Exec& exec, std::size_t l, int sweeps) {
+    Level& v = levels_[l];
+    exec.parallel_for(v.x.size(), JacobiSweepFromZero{view(l), Exec::ptr(v.b), kOmega, Exec::ptr(v.x)});
+    smooth(exec, l, sweeps - 1);
+  }
+
   void smooth(const Exec& exec, std::size_t l, int sweeps) {
     Level& v = levels_[l];
     const PoissonLevel p = view(l);
@@ -194,18 +232,17 @@ class MultigridPreconditioner {
 
   void cycle(const Exec& exec, std::size_t l) {
     Level& v = levels_[l];
-    exec.parallel_for(v.x.size(), ClearFloats{Exec::ptr(v.x)});
     if (l + 1 == levels_.size()) {
-      smooth(exec, l, kCoarsestSweeps);
+      smooth_from_zero(exec, l, kCoarsestSweeps);
       return;
     }
-    smooth(exec, l, kSmoothingSweeps);
+    smooth_from_zero(exec, l, kSmoothingSweeps);
     const PoissonLevel p = view(l);
     exec.parallel_for(v.x.size(), PoissonResidual{p, Exec::ptr(v.x), Exec::ptr(v.b), Exec::ptr(v.tmp)});
     Level& c = levels_[l + 1];
-    exec.parallel_for(c.b.size(), RestrictResidual{p, view(l + 1), Exec::ptr(v.tmp), Exec::ptr(c.b)});
+    exec.parallel_for_3d(c.nx, c.ny, c.nz, RestrictResidual{p, view(l + 1), Exec::ptr(v.tmp), Exec::ptr(c.b)});
     cycle(exec, l + 1);
-    exec.parallel_for(v.x.size(), ProlongAndAdd{view(l + 1), p, Exec::ptr(c.x), Exec::ptr(v.x)});
+    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAndAdd{view(l + 1), p, Exec::ptr(c.x), Exec::ptr(v.x)});
     smooth(exec, l, kSmoothingSweeps);
   }
 
