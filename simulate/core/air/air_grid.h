@@ -192,7 +192,7 @@ class AirGrid {
 
   void enforce_boundaries(const Exec& exec) {
     for (int a = 0; a < 3; ++a)
-      exec.parallel_for(u_[a].size(), EnforceFaceVelocity{cells(), a, Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[a])});
+      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), EnforceFaceVelocity{cells(), a, Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[a])});
   }
 
   // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt.
@@ -288,7 +288,7 @@ class AirGrid {
     exec.parallel_for(n, ComputeProjectionRhs{cells(), Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), Exec::ptr(rhs_)});
     const PcgResult result = pcg_.solve(exec, rhs_, phi_, settings_.projection_tolerance, settings_.projection_max_iterations);
     for (int a = 0; a < 3; ++a)
-      exec.parallel_for(u_[a].size(), SubtractPressureGradient{cells(), a, Exec::ptr(phi_), Exec::ptr(u_[a])});
+      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), SubtractPressureGradient{cells(), a, Exec::ptr(phi_), Exec::ptr(u_[a])});
     return result;
   }
 

@@ -47,8 +47,12 @@ struct EnforceFaceVelocity {
   const AirInflow* inflows;
   float* u;
 
-  DP_HD void operator()(std::size_t f) const {
-    const FaceSides s = face_sides(cells.grid, axis, f);
+  DP_HD void operator()(std::size_t f) const { enforce(f, face_sides(cells.grid, axis, f)); }
+  DP_HD void operator()(int i, int j, int k) const {
+    enforce(cells.grid.face(axis, i, j, k), face_sides(cells.grid, axis, i, j, k));
+  }
+
+  DP_HD void enforce(std::size_t f, const FaceSides& s) const {
     if (face_is_free(cells, axis, s)) return;
     // Walls (closed faces, rigid and liquid cells) win over inflows.
     const bool wall_lo = s.lo ? (cells.kind[s.cell_lo] == kSolidCell || cells.kind[s.cell_lo] == kLiquidCell)

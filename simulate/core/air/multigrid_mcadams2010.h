@@ -9,6 +9,7 @@
 // CG needs. McAdams et al. add extra Gauss-Seidel sweeps near the boundary;
 // these are left out (docs/paper-map.md, departures): CG absorbs the weaker
 // cycle with a few more iterations.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -118,6 +119,28 @@ struct ProlongAndAdd {
     const int ci[2] = {i >> 1, (i & 1) ? (i >> 1) + 1 : (i >> 1) - 1};
     const int cj[2] = {j >> 1, (j & 1) ? (j >> 1) + 1 : (j >> 1) - 1};
     const int ck[2] = {k >> 1, (k & 1) ? (k >> 1) + 1 : (k >> 1) - 1};
+    const bool interior = ci[0] >= 1 && ci[0] + 1 < coarse.nx && cj[0] >= 1 && cj[0] + 1 < coarse.ny && ck[0] >= 1 &&
+                          ck[0] + 1 < coarse.nz;
+    x[f] += interior ? interior_sum(ci, cj, ck) : boundary_sum(ci, cj, ck);
+  }
+
+  // All eight coarse cells exist: the terms and order of boundary_sum,
+  // reached by offsets from the nearest coarse cell.
+  DP_HD float interior_sum(const int* ci, const int* cj, const int* ck) const {
+    const std::ptrdiff_t row = coarse.nx, slab = row * coarse.ny;
+    const std::ptrdiff_t d[3] = {ci[1] - ci[0], (cj[1] - cj[0]) * row, (ck[1] - ck[0]) * slab};
+    const float* near = e + coarse.index(ci[0], cj[0], ck[0]);
+    float s = 0.0f;
+    for (int c = 0; c < 2; ++c)
+      for (int b = 0; b < 2; ++b)
+        for (int a = 0; a < 2; ++a) {
+          const float w = (a ? 0.25f : 0.75f) * (b ? 0.25f : 0.75f) * (c ? 0.25f : 0.75f);
+          s += w * near[a * d[0] + b * d[1] + c * d[2]];
+        }
+    return s;
+  }
+
+  DP_HD float boundary_sum(const int* ci, const int* cj, const int* ck) const {
     float s = 0.0f;
     for (int c = 0; c < 2; ++c) {
       if (ck[c] < 0 || ck[c] >= coarse.nz) continue;
@@ -130,7 +153,7 @@ struct ProlongAndAdd {
         }
       }
     }
-    x[f] += s;
+    return s;
   }
 };
 
