@@ -192,7 +192,7 @@ class AirGrid {
 
   void enforce_boundaries(const Exec& exec) {
     for (int a = 0; a < 3; ++a)
-      exec.parallel_for(u_[a].size(), EnforceFaceVelocity{cells(), a, Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[a])});
+      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), EnforceFaceVelocity{cells(), a, Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[a])});
   }
 
   // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt.
@@ -221,19 +221,20 @@ class AirGrid {
     courant *= dt / grid_.dx;
     const int substeps = courant > kMaxVaporCourant ? static_cast<int>(std::ceil(courant / kMaxVaporCourant)) : 1;
     const float h = dt / static_cast<float>(substeps);
-    const std::size_t n = grid_.cell_count();
     for (int s = 0; s < substeps; ++s) {
       const VaporFaceFlux flux{cells(), Exec::ptr(vapor_), settings_.ambient_vapor, h};
       for (int a = 0; a < 3; ++a)
-        exec.parallel_for(u_[a].size(), ComputeVaporFlux{flux, a, Exec::ptr(u_[a]), Exec::ptr(vapor_flux_[a])});
+        exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
+                             ComputeVaporFlux{flux, a, Exec::ptr(u_[a]), Exec::ptr(vapor_flux_[a])});
       const double* fx = Exec::ptr(vapor_flux_[0]);
       const double* fy = Exec::ptr(vapor_flux_[1]);
       const double* fz = Exec::ptr(vapor_flux_[2]);
       if (faces_.any_open()) {
-        ledger_.open_in += exec.sum(n, OpenFaceVaporMass{grid_, fx, fy, fz, true});
-        ledger_.open_out += exec.sum(n, OpenFaceVaporMass{grid_, fx, fy, fz, false});
+        const std::size_t boundary = OpenFaceVaporMass::face_count(grid_);
+        ledger_.open_in += exec.sum(boundary, OpenFaceVaporMass{grid_, fx, fy, fz, true});
+        ledger_.open_out += exec.sum(boundary, OpenFaceVaporMass{grid_, fx, fy, fz, false});
       }
-      exec.parallel_for(n, TransportVapor{grid_, Exec::ptr(vapor_), fx, fy, fz, Exec::ptr(vapor_tmp_)});
+      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, TransportVapor{grid_, Exec::ptr(vapor_), fx, fy, fz, Exec::ptr(vapor_tmp_)});
       vapor_.swap(vapor_tmp_);
     }
     return substeps;
@@ -287,7 +288,7 @@ class AirGrid {
     exec.parallel_for(n, ComputeProjectionRhs{cells(), Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), Exec::ptr(rhs_)});
     const PcgResult result = pcg_.solve(exec, rhs_, phi_, settings_.projection_tolerance, settings_.projection_max_iterations);
     for (int a = 0; a < 3; ++a)
-      exec.parallel_for(u_[a].size(), SubtractPressureGradient{cells(), a, Exec::ptr(phi_), Exec::ptr(u_[a])});
+      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), SubtractPressureGradient{cells(), a, Exec::ptr(phi_), Exec::ptr(u_[a])});
     return result;
   }
 
@@ -383,16 +384,16 @@ class AirGrid {
   template <class T>
   void advect_field(const Exec& exec, const Lattice<T>& source, const FaceVelocity& vel, float dt, Buffer<T>& out,
                     Buffer<T>& scratch) {
-    const std::size_t n = source.size();
     const float c = dt / grid_.dx;
-    exec.parallel_for(n, AdvectSemiLagrangian<T>{source, vel, c, Exec::ptr(out)});
+    const int nx = source.nx, ny = source.ny, nz = source.nz;
+    exec.parallel_for_3d(nx, ny, nz, AdvectSemiLagrangian<T>{source, vel, c, Exec::ptr(out)});
     if (settings_.advection == AirAdvection::SemiLagrangian) return;
     // Forward step in `out`, backward step in `scratch`; the corrected value
     // overwrites the backward one in place (each point reads only its own).
     Lattice<T> forward = source;
     forward.value = Exec::ptr(out);
-    exec.parallel_for(n, AdvectSemiLagrangian<T>{forward, vel, -c, Exec::ptr(scratch)});
-    exec.parallel_for(n, MacCormackCorrect<T>{source, vel, c, Exec::ptr(out), Exec::ptr(scratch), Exec::ptr(scratch)});
+    exec.parallel_for_3d(nx, ny, nz, AdvectSemiLagrangian<T>{forward, vel, -c, Exec::ptr(scratch)});
+    exec.parallel_for_3d(nx, ny, nz, MacCormackCorrect<T>{source, vel, c, Exec::ptr(out), Exec::ptr(scratch), Exec::ptr(scratch)});
     out.swap(scratch);
   }
 

@@ -16,9 +16,8 @@ struct FaceSides {
   std::size_t cell_lo, cell_hi;
 };
 
-DP_HD inline FaceSides face_sides(const MacGrid& g, int axis, std::size_t f) {
-  int i, j, k;
-  g.face_coords(axis, f, i, j, k);
+// The same for face (i, j, k) of `axis`.
+DP_HD inline FaceSides face_sides(const MacGrid& g, int axis, int i, int j, int k) {
   const int a = axis == 0 ? i : (axis == 1 ? j : k);
   FaceSides s;
   s.lo = a > 0;
@@ -26,6 +25,12 @@ DP_HD inline FaceSides face_sides(const MacGrid& g, int axis, std::size_t f) {
   s.cell_lo = s.lo ? g.cell(i - (axis == 0), j - (axis == 1), k - (axis == 2)) : 0;
   s.cell_hi = s.hi ? g.cell(i, j, k) : 0;
   return s;
+}
+
+DP_HD inline FaceSides face_sides(const MacGrid& g, int axis, std::size_t f) {
+  int i, j, k;
+  g.face_coords(axis, f, i, j, k);
+  return face_sides(g, axis, i, j, k);
 }
 
 // True where the flow and the projection decide the face's velocity.
@@ -42,8 +47,12 @@ struct EnforceFaceVelocity {
   const AirInflow* inflows;
   float* u;
 
-  DP_HD void operator()(std::size_t f) const {
-    const FaceSides s = face_sides(cells.grid, axis, f);
+  DP_HD void operator()(std::size_t f) const { enforce(f, face_sides(cells.grid, axis, f)); }
+  DP_HD void operator()(int i, int j, int k) const {
+    enforce(cells.grid.face(axis, i, j, k), face_sides(cells.grid, axis, i, j, k));
+  }
+
+  DP_HD void enforce(std::size_t f, const FaceSides& s) const {
     if (face_is_free(cells, axis, s)) return;
     // Walls (closed faces, rigid and liquid cells) win over inflows.
     const bool wall_lo = s.lo ? (cells.kind[s.cell_lo] == kSolidCell || cells.kind[s.cell_lo] == kLiquidCell)

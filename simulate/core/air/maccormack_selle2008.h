@@ -17,9 +17,12 @@ struct MacCormackCorrect {
   const T* backward;  // phi~
   T* out;
 
-  DP_HD void operator()(std::size_t n) const {
+  DP_HD void operator()(std::size_t n) const { correct(n, source.point(n)); }
+  DP_HD void operator()(int i, int j, int k) const { correct(source.index(i, j, k), source.point(i, j, k)); }
+
+  DP_HD void correct(std::size_t n, const GridPoint& p) const {
     T lo, hi;
-    source.sample(trace_back(velocity, source.point(n), cells_per_speed), &lo, &hi);
+    source.sample(trace_back(velocity, p, cells_per_speed), &lo, &hi);
     const T v = forward[n] + static_cast<T>(0.5) * (source.value[n] - backward[n]);
     out[n] = v < lo ? lo : (v > hi ? hi : v);
   }

@@ -9,6 +9,7 @@
 // CG needs. McAdams et al. add extra Gauss-Seidel sweeps near the boundary;
 // these are left out (docs/paper-map.md, departures): CG absorbs the weaker
 // cycle with a few more iterations.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -52,12 +53,39 @@ struct RestrictResidual {
   const float* r;
   float* b;
   DP_HD void operator()(std::size_t c) const {
+    int I, J, K;
+    coarse.coords(c, I, J, K);
+    (*this)(I, J, K);
+  }
+  DP_HD void operator()(int I, int J, int K) const {
+    const std::size_t c = coarse.index(I, J, K);
     if (!coarse.unknown[c]) {
       b[c] = 0.0f;
       return;
     }
-    int I, J, K;
-    coarse.coords(c, I, J, K);
+    const bool interior = 2 * I >= 1 && 2 * I + 2 < fine.nx && 2 * J >= 1 && 2 * J + 2 < fine.ny && 2 * K >= 1 &&
+                          2 * K + 2 < fine.nz;
+    b[c] = 0.5f * (interior ? interior_sum(I, J, K) : boundary_sum(I, J, K));
+  }
+
+  // All 4 x 4 x 4 fine cells exist: walk them by offsets, with the axis
+  // weights of prolongation_weight (1/4, 3/4, 3/4, 1/4) as constants; the
+  // terms and their order are those of boundary_sum.
+  DP_HD float interior_sum(int I, int J, int K) const {
+    const float w[4] = {0.25f, 0.75f, 0.75f, 0.25f};
+    const std::size_t row = static_cast<std::size_t>(fine.nx), slab = row * fine.ny;
+    const float* base = r + fine.index(2 * I - 1, 2 * J - 1, 2 * K - 1);
+    float s = 0.0f;
+    for (int dk = 0; dk < 4; ++dk)
+      for (int dj = 0; dj < 4; ++dj) {
+        const float wjk = w[dk] * w[dj];
+        const float* line = base + dk * slab + dj * row;
+        for (int di = 0; di < 4; ++di) s += wjk * w[di] * line[di];
+      }
+    return s;
+  }
+
+  DP_HD float boundary_sum(int I, int J, int K) const {
     float s = 0.0f;
     for (int fk = 2 * K - 1; fk <= 2 * K + 2; ++fk) {
       if (fk < 0 || fk >= fine.nz) continue;
@@ -71,7 +99,7 @@ struct RestrictResidual {
         }
       }
     }
-    b[c] = 0.5f * s;
+    return s;
   }
 };
 
@@ -81,12 +109,38 @@ struct ProlongAndAdd {
   const float* e;
   float* x;
   DP_HD void operator()(std::size_t f) const {
-    if (!fine.unknown[f]) return;
     int i, j, k;
     fine.coords(f, i, j, k);
+    (*this)(i, j, k);
+  }
+  DP_HD void operator()(int i, int j, int k) const {
+    const std::size_t f = fine.index(i, j, k);
+    if (!fine.unknown[f]) return;
     const int ci[2] = {i >> 1, (i & 1) ? (i >> 1) + 1 : (i >> 1) - 1};
     const int cj[2] = {j >> 1, (j & 1) ? (j >> 1) + 1 : (j >> 1) - 1};
     const int ck[2] = {k >> 1, (k & 1) ? (k >> 1) + 1 : (k >> 1) - 1};
+    const bool interior = ci[0] >= 1 && ci[0] + 1 < coarse.nx && cj[0] >= 1 && cj[0] + 1 < coarse.ny && ck[0] >= 1 &&
+                          ck[0] + 1 < coarse.nz;
+    x[f] += interior ? interior_sum(ci, cj, ck) : boundary_sum(ci, cj, ck);
+  }
+
+  // All eight coarse cells exist: the terms and order of boundary_sum,
+  // reached by offsets from the nearest coarse cell.
+  DP_HD float interior_sum(const int* ci, const int* cj, const int* ck) const {
+    const std::ptrdiff_t row = coarse.nx, slab = row * coarse.ny;
+    const std::ptrdiff_t d[3] = {ci[1] - ci[0], (cj[1] - cj[0]) * row, (ck[1] - ck[0]) * slab};
+    const float* near = e + coarse.index(ci[0], cj[0], ck[0]);
+    float s = 0.0f;
+    for (int c = 0; c < 2; ++c)
+      for (int b = 0; b < 2; ++b)
+        for (int a = 0; a < 2; ++a) {
+          const float w = (a ? 0.25f : 0.75f) * (b ? 0.25f : 0.75f) * (c ? 0.25f : 0.75f);
+          s += w * near[a * d[0] + b * d[1] + c * d[2]];
+        }
+    return s;
+  }
+
+  DP_HD float boundary_sum(const int* ci, const int* cj, const int* ck) const {
     float s = 0.0f;
     for (int c = 0; c < 2; ++c) {
       if (ck[c] < 0 || ck[c] >= coarse.nz) continue;
@@ -99,7 +153,7 @@ struct ProlongAndAdd {
         }
       }
     }
-    x[f] += s;
+    return s;
   }
 };
 
@@ -183,6 +237,13 @@ class MultigridPreconditioner {
     Buffer<float> x, b, tmp;
   };
 
+  // The first sweep from x = 0 needs neither the clear nor A x.
+  void smooth_from_zero(const Exec& exec, std::size_t l, int sweeps) {
+    Level& v = levels_[l];
+    exec.parallel_for(v.x.size(), JacobiSweepFromZero{view(l), Exec::ptr(v.b), kOmega, Exec::ptr(v.x)});
+    smooth(exec, l, sweeps - 1);
+  }
+
   void smooth(const Exec& exec, std::size_t l, int sweeps) {
     Level& v = levels_[l];
     const PoissonLevel p = view(l);
@@ -194,18 +255,17 @@ class MultigridPreconditioner {
 
   void cycle(const Exec& exec, std::size_t l) {
     Level& v = levels_[l];
-    exec.parallel_for(v.x.size(), ClearFloats{Exec::ptr(v.x)});
     if (l + 1 == levels_.size()) {
-      smooth(exec, l, kCoarsestSweeps);
+      smooth_from_zero(exec, l, kCoarsestSweeps);
       return;
     }
-    smooth(exec, l, kSmoothingSweeps);
+    smooth_from_zero(exec, l, kSmoothingSweeps);
     const PoissonLevel p = view(l);
     exec.parallel_for(v.x.size(), PoissonResidual{p, Exec::ptr(v.x), Exec::ptr(v.b), Exec::ptr(v.tmp)});
     Level& c = levels_[l + 1];
-    exec.parallel_for(c.b.size(), RestrictResidual{p, view(l + 1), Exec::ptr(v.tmp), Exec::ptr(c.b)});
+    exec.parallel_for_3d(c.nx, c.ny, c.nz, RestrictResidual{p, view(l + 1), Exec::ptr(v.tmp), Exec::ptr(c.b)});
     cycle(exec, l + 1);
-    exec.parallel_for(v.x.size(), ProlongAndAdd{view(l + 1), p, Exec::ptr(c.x), Exec::ptr(v.x)});
+    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAndAdd{view(l + 1), p, Exec::ptr(c.x), Exec::ptr(v.x)});
     smooth(exec, l, kSmoothingSweeps);
   }
 

@@ -136,4 +136,21 @@ struct JacobiSweep {
   }
 };
 
+// The first sweep from x = 0: x_out = omega D^-1 b, the same values as
+// JacobiSweep on a zero x without reading it.
+struct JacobiSweepFromZero {
+  PoissonLevel level;
+  const float* b;
+  float omega;
+  float* out;
+  DP_HD void operator()(std::size_t c) const {
+    if (!level.unknown[c]) {
+      out[c] = 0.0f;
+      return;
+    }
+    const float diagonal = level.diagonal[c] ? static_cast<float>(level.diagonal[c]) : 1.0f;
+    out[c] = omega * b[c] / diagonal;
+  }
+};
+
 }  // namespace dp

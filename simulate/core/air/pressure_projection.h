@@ -46,8 +46,12 @@ struct SubtractPressureGradient {
   int axis;
   const float* phi;
   float* u;
-  DP_HD void operator()(std::size_t f) const {
-    const FaceSides s = face_sides(cells.grid, axis, f);
+  DP_HD void operator()(std::size_t f) const { subtract(f, face_sides(cells.grid, axis, f)); }
+  DP_HD void operator()(int i, int j, int k) const {
+    subtract(cells.grid.face(axis, i, j, k), face_sides(cells.grid, axis, i, j, k));
+  }
+
+  DP_HD void subtract(std::size_t f, const FaceSides& s) const {
     if (!face_is_free(cells, axis, s)) return;
     const float hi = s.hi ? phi[s.cell_hi] : 0.0f;
     const float lo = s.lo ? phi[s.cell_lo] : 0.0f;

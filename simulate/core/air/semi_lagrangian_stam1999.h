@@ -27,6 +27,9 @@ struct AdvectSemiLagrangian {
   T* out;
 
   DP_HD void operator()(std::size_t n) const { out[n] = source.sample(trace_back(velocity, source.point(n), cells_per_speed)); }
+  DP_HD void operator()(int i, int j, int k) const {
+    out[source.index(i, j, k)] = source.sample(trace_back(velocity, source.point(i, j, k), cells_per_speed));
+  }
 };
 
 }  // namespace dp

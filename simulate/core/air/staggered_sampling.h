@@ -29,6 +29,28 @@ DP_HD inline GridPoint grid_point_of(const MacGrid& g, Vec3 p) {
   return GridPoint{static_cast<int>(fi), static_cast<int>(fj), static_cast<int>(fk), Vec3{x.x - fi, x.y - fj, x.z - fk}};
 }
 
+// Lattice index `base` + `offset` as the lower corner i and the weight t of
+// i + 1, clamped to [0, n - 1]; `step` is 1, or 0 where the upper corner
+// would fall off a lattice of one point.
+struct Corner {
+  int i;
+  float t;
+  int step;
+  DP_HD static Corner locate(int base, float offset, int n) {
+    const float whole = floorf(offset);
+    Corner c{base + static_cast<int>(whole), offset - whole, 1};
+    if (c.i < 0) {
+      c.i = 0;
+      c.t = 0.0f;
+    } else if (c.i >= n - 1) {
+      c.i = n > 1 ? n - 2 : 0;
+      c.t = n > 1 ? 1.0f : 0.0f;
+    }
+    if (n < 2) c.step = 0;
+    return c;
+  }
+};
+
 // Values at grid points (i, j, k) + `shift` (cells: 0.5 on a cell-centred
 // axis, 0 on a face axis), nx x ny x nz of them.
 template <class T>
@@ -38,30 +60,41 @@ struct Lattice {
   int nx, ny, nz;
 
   DP_HD std::size_t size() const { return static_cast<std::size_t>(nx) * ny * nz; }
-  DP_HD T at(int i, int j, int k) const { return value[(static_cast<std::size_t>(k) * ny + j) * nx + i]; }
+  DP_HD std::size_t index(int i, int j, int k) const { return (static_cast<std::size_t>(k) * ny + j) * nx + i; }
+  DP_HD T at(int i, int j, int k) const { return value[index(i, j, k)]; }
   // The grid point of value[n].
   DP_HD GridPoint point(std::size_t n) const {
     return GridPoint{static_cast<int>(n % nx), static_cast<int>((n / nx) % ny),
                      static_cast<int>(n / (static_cast<std::size_t>(nx) * ny)), shift};
   }
+  DP_HD GridPoint point(int i, int j, int k) const { return GridPoint{i, j, k, shift}; }
+
+  // Where p falls along one axis of this lattice: the lower corner and the
+  // weight of the upper one, clamped to the lattice.
+  DP_HD Corner corner(int axis, const GridPoint& p) const {
+    return axis == 0 ? Corner::locate(p.i, p.offset.x - shift.x, nx)
+                     : (axis == 1 ? Corner::locate(p.j, p.offset.y - shift.y, ny) : Corner::locate(p.k, p.offset.z - shift.z, nz));
+  }
 
   // The value at p, and the smallest and largest of the eight values it
   // was interpolated from (MacCormack's clamp, Selle et al. 2008).
   DP_HD T sample(const GridPoint& p, T* lo = nullptr, T* hi = nullptr) const {
-    int i0, j0, k0;
-    float tx, ty, tz;
-    locate(p.i, p.offset.x - shift.x, nx, i0, tx);
-    locate(p.j, p.offset.y - shift.y, ny, j0, ty);
-    locate(p.k, p.offset.z - shift.z, nz, k0, tz);
-    const int i1 = i0 + 1 < nx ? i0 + 1 : i0, j1 = j0 + 1 < ny ? j0 + 1 : j0, k1 = k0 + 1 < nz ? k0 + 1 : k0;
-    const T c000 = at(i0, j0, k0), c100 = at(i1, j0, k0), c010 = at(i0, j1, k0), c110 = at(i1, j1, k0);
-    const T c001 = at(i0, j0, k1), c101 = at(i1, j0, k1), c011 = at(i0, j1, k1), c111 = at(i1, j1, k1);
+    return sample(corner(0, p), corner(1, p), corner(2, p), lo, hi);
+  }
+  // The same from corners already located (FaceVelocity shares them between
+  // components): the eight values are reached by offsets from one index.
+  DP_HD T sample(Corner x, Corner y, Corner z, T* lo = nullptr, T* hi = nullptr) const {
+    const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
+    const std::size_t c = index(x.i, y.i, z.i);
+    const std::size_t di = x.step, dj = y.step * row, dk = z.step * slab;
+    const T c000 = value[c], c100 = value[c + di], c010 = value[c + dj], c110 = value[c + dj + di];
+    const T c001 = value[c + dk], c101 = value[c + dk + di], c011 = value[c + dk + dj], c111 = value[c + dk + dj + di];
     if (lo && hi) {
       *lo = min8(c000, c100, c010, c110, c001, c101, c011, c111);
       *hi = -min8(-c000, -c100, -c010, -c110, -c001, -c101, -c011, -c111);
     }
-    const T x00 = lerp(c000, c100, tx), x10 = lerp(c010, c110, tx), x01 = lerp(c001, c101, tx), x11 = lerp(c011, c111, tx);
-    return lerp(lerp(x00, x10, ty), lerp(x01, x11, ty), tz);
+    const T x00 = lerp(c000, c100, x.t), x10 = lerp(c010, c110, x.t), x01 = lerp(c001, c101, x.t), x11 = lerp(c011, c111, x.t);
+    return lerp(lerp(x00, x10, y.t), lerp(x01, x11, y.t), z.t);
   }
 
  private:
@@ -70,20 +103,6 @@ struct Lattice {
     return min2(min2(min2(a, b), min2(c, d)), min2(min2(e, f), min2(g, h)));
   }
   DP_HD static T lerp(T a, T b, float t) { return a + static_cast<T>(t) * (b - a); }
-  // Lattice index `base` + `offset` as the lower corner i and weight t,
-  // clamped to [0, n - 1].
-  DP_HD static void locate(int base, float offset, int n, int& i, float& t) {
-    const float whole = floorf(offset);
-    i = base + static_cast<int>(whole);
-    t = offset - whole;
-    if (i < 0) {
-      i = 0;
-      t = 0.0f;
-    } else if (i >= n - 1) {
-      i = n > 1 ? n - 2 : 0;
-      t = n > 1 ? 1.0f : 0.0f;
-    }
-  }
 };
 
 template <class T>
@@ -99,7 +118,15 @@ DP_HD inline Lattice<float> face_lattice(const MacGrid& g, int axis, const float
 // The three staggered components, sampled together (m/s).
 struct FaceVelocity {
   Lattice<float> u, v, w;
-  DP_HD Vec3 at(const GridPoint& p) const { return Vec3{u.sample(p), v.sample(p), w.sample(p)}; }
+  // Each axis has two shifts (0 on the faces of that axis, 0.5 for the other
+  // two components) and the lattice sizes pair up likewise, so six located
+  // corners serve the three components instead of nine.
+  DP_HD Vec3 at(const GridPoint& p) const {
+    const Corner x0 = u.corner(0, p), x5 = v.corner(0, p);
+    const Corner y0 = v.corner(1, p), y5 = u.corner(1, p);
+    const Corner z0 = w.corner(2, p), z5 = u.corner(2, p);
+    return Vec3{u.sample(x0, y5, z5), v.sample(x5, y0, z5), w.sample(x5, y5, z0)};
+  }
   DP_HD const Lattice<float>& component(int axis) const { return axis == 0 ? u : (axis == 1 ? v : w); }
 };
 

@@ -29,8 +29,15 @@ struct VaporFaceFlux {
   float dt;
 
   DP_HD double operator()(int axis, const float* u, std::size_t f) const {
+    int i, j, k;
+    cells.grid.face_coords(axis, f, i, j, k);
+    return (*this)(axis, u, i, j, k);
+  }
+  // Face (i, j, k) of `axis`.
+  DP_HD double operator()(int axis, const float* u, int i, int j, int k) const {
     const MacGrid& g = cells.grid;
-    const FaceSides s = face_sides(g, axis, f);
+    const FaceSides s = face_sides(g, axis, i, j, k);
+    const std::size_t f = g.face(axis, i, j, k);
     const double c = static_cast<double>(u[f]) * dt / g.dx;
     if (c == 0.0) return 0.0;
     if (!(s.lo && s.hi)) {
@@ -44,10 +51,12 @@ struct VaporFaceFlux {
     const std::size_t up = forward ? s.cell_lo : s.cell_hi, down = forward ? s.cell_hi : s.cell_lo;
     double slope = 0.0;
     // The cell behind the upwind cell, if it carries air, limits the slope.
-    int i, j, k;
-    g.cell_coords(up, i, j, k);
+    // Face (i, j, k) is the low face of cell (i, j, k): that cell is the
+    // upwind one for backward flow, its low neighbour for forward flow.
+    const int d = forward ? -1 : 0;
+    const int ui = i + (axis == 0 ? d : 0), uj = j + (axis == 1 ? d : 0), uk = k + (axis == 2 ? d : 0);
     int bi, bj, bk;
-    if (cells.neighbour(i, j, k, axis, forward ? 0 : 1, bi, bj, bk) && carries_air(cells.at(bi, bj, bk)))
+    if (cells.neighbour(ui, uj, uk, axis, forward ? 0 : 1, bi, bj, bk) && carries_air(cells.at(bi, bj, bk)))
       slope = minmod(vapor[up] - vapor[g.cell(bi, bj, bk)], vapor[down] - vapor[up]);
     return c * (vapor[up] + 0.5 * (1.0 - fabs(c)) * slope);
   }
@@ -60,6 +69,7 @@ struct ComputeVaporFlux {
   const float* u;
   double* out;
   DP_HD void operator()(std::size_t f) const { out[f] = flux(axis, u, f); }
+  DP_HD void operator()(int i, int j, int k) const { out[flux.cells.grid.face(axis, i, j, k)] = flux(axis, u, i, j, k); }
 };
 
 // rho_c += sum of fluxes in - fluxes out, over its six faces (gather).
@@ -74,6 +84,10 @@ struct TransportVapor {
   DP_HD void operator()(std::size_t c) const {
     int i, j, k;
     grid.cell_coords(c, i, j, k);
+    (*this)(i, j, k);
+  }
+  DP_HD void operator()(int i, int j, int k) const {
+    const std::size_t c = grid.cell(i, j, k);
     double change = 0.0;
     change += flux_x[grid.face(0, i, j, k)] - flux_x[grid.face(0, i + 1, j, k)];
     change += flux_y[grid.face(1, i, j, k)] - flux_y[grid.face(1, i, j + 1, k)];
@@ -82,8 +96,10 @@ struct TransportVapor {
   }
 };
 
-// Vapor mass (kg) through the open domain faces of cell c in one sub-step,
-// `entering` or leaving, for the ledger.
+// Vapor mass (kg) through the domain's boundary faces in one sub-step,
+// `entering` or leaving, for the ledger. Summed over the boundary faces
+// alone (closed ones carry no flux): index b runs over the six sides in the
+// order x-, x+, y-, y+, z-, z+, each side's faces in its own row order.
 struct OpenFaceVaporMass {
   MacGrid grid;
   const double* flux_x;
@@ -91,19 +107,28 @@ struct OpenFaceVaporMass {
   const double* flux_z;
   bool entering;
 
-  DP_HD double operator()(std::size_t c) const {
+  DP_HD static std::size_t side_count(const MacGrid& g, int axis) {
+    return axis == 0 ? static_cast<std::size_t>(g.ny) * g.nz
+                     : (axis == 1 ? static_cast<std::size_t>(g.nx) * g.nz : static_cast<std::size_t>(g.nx) * g.ny);
+  }
+  DP_HD static std::size_t face_count(const MacGrid& g) { return 2 * (side_count(g, 0) + side_count(g, 1) + side_count(g, 2)); }
+
+  DP_HD double operator()(std::size_t b) const {
     const MacGrid& g = grid;
-    int i, j, k;
-    g.cell_coords(c, i, j, k);
-    double m = 0.0;
+    int axis = 0;
+    while (b >= 2 * side_count(g, axis)) b -= 2 * side_count(g, axis++);
+    const std::size_t per_side = side_count(g, axis);
+    const bool high = b >= per_side;
+    const std::size_t m = high ? b - per_side : b;
+    // The side's faces as a 2-D array over the other two axes, first one fastest.
+    const int n0 = axis == 0 ? g.ny : g.nx;
+    const int p = static_cast<int>(m % n0), q = static_cast<int>(m / n0);
+    const int at = high ? g.n(axis) : 0;
+    const std::size_t f = axis == 0 ? g.face(0, at, p, q) : (axis == 1 ? g.face(1, p, at, q) : g.face(2, p, q, at));
+    const double* flux = axis == 0 ? flux_x : (axis == 1 ? flux_y : flux_z);
     // Outward flux is +G on the max side, -G on the min side.
-    if (i == 0) m += side(-flux_x[g.face(0, 0, j, k)]);
-    if (i == g.nx - 1) m += side(flux_x[g.face(0, g.nx, j, k)]);
-    if (j == 0) m += side(-flux_y[g.face(1, i, 0, k)]);
-    if (j == g.ny - 1) m += side(flux_y[g.face(1, i, g.ny, k)]);
-    if (k == 0) m += side(-flux_z[g.face(2, i, j, 0)]);
-    if (k == g.nz - 1) m += side(flux_z[g.face(2, i, j, g.nz)]);
-    return m * static_cast<double>(g.cell_volume());
+    const double outward = high ? flux[f] : -flux[f];
+    return side(outward) * static_cast<double>(g.cell_volume());
   }
   DP_HD double side(double outward) const { return entering ? (outward < 0 ? -outward : 0.0) : (outward > 0 ? outward : 0.0); }
 };

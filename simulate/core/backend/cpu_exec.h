@@ -46,6 +46,19 @@ class CpuExec {
     for (std::int64_t i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
   }
 
+  // Calls f(i, j, k) for every point of an nx x ny x nz box: threads take
+  // whole x rows, so a functor is handed its coordinates without dividing a
+  // linear index and its inner loop runs along contiguous memory.
+  template <class F>
+  void parallel_for_3d(int nx, int ny, int nz, const F& f) const {
+    const std::int64_t rows = static_cast<std::int64_t>(ny) * nz;
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (std::int64_t r = 0; r < rows; ++r) {
+      const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
+      for (int i = 0; i < nx; ++i) f(i, j, k);
+    }
+  }
+
   // Stable sort of (keys, values) by key.
   template <class K, class V>
   void sort_by_key(Buffer<K>& keys, Buffer<V>& values) const {

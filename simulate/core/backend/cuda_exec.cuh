@@ -33,6 +33,14 @@ __global__ void for_each_index(std::size_t n, F f) {
   if (i < n) f(i);
 }
 
+template <class F>
+__global__ void for_each_point(int nx, int ny, int nz, F f) {
+  const int i = static_cast<int>(blockIdx.x * blockDim.x + threadIdx.x);
+  const int j = static_cast<int>(blockIdx.y * blockDim.y + threadIdx.y);
+  const int k = static_cast<int>(blockIdx.z * blockDim.z + threadIdx.z);
+  if (i < nx && j < ny && k < nz) f(i, j, k);
+}
+
 template <class ValueAt>
 struct BlockSum {
   std::size_t n;
@@ -93,6 +101,17 @@ class CudaExec {
     constexpr unsigned kBlock = 256;
     unsigned blocks = static_cast<unsigned>((n + kBlock - 1) / kBlock);
     cuda_detail::for_each_index<<<blocks, kBlock>>>(n, f);
+    cuda_detail::check(cudaGetLastError(), "kernel launch");
+  }
+
+  // Calls f(i, j, k) for every point of an nx x ny x nz box, one thread per
+  // point in a 3-D grid of blocks (x fastest, as CpuExec's rows).
+  template <class F>
+  void parallel_for_3d(int nx, int ny, int nz, const F& f) const {
+    if (nx <= 0 || ny <= 0 || nz <= 0) return;
+    const dim3 block(32, 4, 2);
+    const dim3 blocks((nx + block.x - 1) / block.x, (ny + block.y - 1) / block.y, (nz + block.z - 1) / block.z);
+    cuda_detail::for_each_point<<<blocks, block>>>(nx, ny, nz, f);
     cuda_detail::check(cudaGetLastError(), "kernel launch");
   }
 
