@@ -169,6 +169,10 @@ PlyData read_ply(const std::filesystem::path& path) {
   }
   if (!in) throw fail("header has no end_header line");
   if (face_count > 0 && !face.present) throw fail("face element without vertex_indices list");
+  // Vertices without properties occupy no bytes, so the size check below
+  // cannot bound their count; nothing we read has such vertices.
+  if (data.vertex_count > 0 && data.vertex.empty())
+    throw fail("element vertex announces " + std::to_string(data.vertex_count) + " vertices but no vertex properties");
 
   // Counts are checked against the bytes left before anything is
   // allocated: a header must not make us reserve more than the file holds.

@@ -38,12 +38,17 @@ struct SubtractWhere {
   float* a;
   DP_HD void operator()(std::size_t i) const { a[i] = mask[i] ? a[i] - value : 0.0f; }
 };
-// y += s x
-struct Axpy {
-  float s;
-  const float* x;
-  float* y;
-  DP_HD void operator()(std::size_t i) const { y[i] += s * x[i]; }
+// x += alpha d and r -= alpha q, one pass over both.
+struct StepIterateAndResidual {
+  float alpha;
+  const float* d;
+  const float* q;
+  float* x;
+  float* r;
+  DP_HD void operator()(std::size_t i) const {
+    x[i] += alpha * d[i];
+    r[i] += -alpha * q[i];
+  }
 };
 // d = z + s d
 struct Xpay {
@@ -93,8 +98,7 @@ class PoissonPcg {
       const double dq = exec.sum(n, ProductOf{Exec::ptr(d_), Exec::ptr(q_)});
       if (!(dq > 0.0)) break;  // converged to rounding
       const float alpha = static_cast<float>(rz / dq);
-      exec.parallel_for(n, Axpy{alpha, Exec::ptr(d_), Exec::ptr(x)});
-      exec.parallel_for(n, Axpy{-alpha, Exec::ptr(q_), Exec::ptr(r_)});
+      exec.parallel_for(n, StepIterateAndResidual{alpha, Exec::ptr(d_), Exec::ptr(q_), Exec::ptr(x), Exec::ptr(r_)});
       ++result.iterations;
       r_norm = std::sqrt(exec.sum(n, ProductOf{Exec::ptr(r_), Exec::ptr(r_)}));
       result.relative_residual = static_cast<float>(r_norm / b_norm);

@@ -162,11 +162,6 @@ struct ClearFloats {
   DP_HD void operator()(std::size_t i) const { x[i] = 0.0f; }
 };
 
-struct CopyFloats {
-  const float* in;
-  float* out;
-  DP_HD void operator()(std::size_t i) const { out[i] = in[i]; }
-};
 
 template <class Exec>
 class MultigridPreconditioner {
@@ -174,9 +169,10 @@ class MultigridPreconditioner {
   using Buffer = typename Exec::template Buffer<T>;
 
  public:
-  static constexpr int kSmoothingSweeps = 2;   // before and after the coarse correction
+  static constexpr int kSmoothingSweeps = 2;   // before and after the coarse correction; even (JacobiSweeps)
   static constexpr int kCoarsestSweeps = 40;   // Jacobi from zero on the coarsest level
   static constexpr float kOmega = 2.0f / 3.0f;
+  static_assert(kSmoothingSweeps % 2 == 0, "post-smoothing starts from a guess: JacobiSweeps needs an even count");
 
   // Builds the hierarchy's shapes; call `set_unknowns` whenever the cells change.
   void resize(int nx, int ny, int nz, DomainFaces faces) {
@@ -190,9 +186,11 @@ class MultigridPreconditioner {
       l.unknown.resize(n);
       l.stencil.resize(n);
       l.diagonal.resize(n);
-      l.x.resize(n);
-      l.b.resize(n);
       l.tmp.resize(n);
+      if (!levels_.empty()) {  // the finest level works in the caller's r and z
+        l.x.resize(n);
+        l.b.resize(n);
+      }
       levels_.push_back(std::move(l));
       // Halve while every axis keeps at least four cells.
       if (nx < 8 || ny < 8 || nz < 8) break;
@@ -218,11 +216,8 @@ class MultigridPreconditioner {
 
   // z = M^-1 r, one V-cycle.
   void apply(const Exec& exec, const Buffer<float>& r, Buffer<float>& z) {
-    Level& top = levels_[0];
-    exec.parallel_for(r.size(), CopyFloats{Exec::ptr(r), Exec::ptr(top.b)});
-    cycle(exec, 0);
     z.resize(r.size());
-    exec.parallel_for(r.size(), CopyFloats{Exec::ptr(top.x), Exec::ptr(z)});
+    cycle(exec, 0, Exec::ptr(r), Exec::ptr(z));
   }
 
   PoissonLevel view(std::size_t l) const {
@@ -237,36 +232,29 @@ class MultigridPreconditioner {
     Buffer<float> x, b, tmp;
   };
 
-  // The first sweep from x = 0 needs neither the clear nor A x.
-  void smooth_from_zero(const Exec& exec, std::size_t l, int sweeps) {
+  // Damped Jacobi sweeps on level l's A x = b, as passes of one launcher
+  // call; from zero, or (an even number of sweeps) from the guess in x.
+  void smooth(const Exec& exec, std::size_t l, const float* b, float* x, bool from_zero, int sweeps) {
     Level& v = levels_[l];
-    exec.parallel_for(v.x.size(), JacobiSweepFromZero{view(l), Exec::ptr(v.b), kOmega, Exec::ptr(v.x)});
-    smooth(exec, l, sweeps - 1);
+    exec.parallel_sweeps(v.tmp.size(), sweeps, JacobiSweeps{view(l), b, kOmega, from_zero, sweeps, x, Exec::ptr(v.tmp)});
   }
 
-  void smooth(const Exec& exec, std::size_t l, int sweeps) {
-    Level& v = levels_[l];
-    const PoissonLevel p = view(l);
-    for (int s = 0; s < sweeps; ++s) {
-      exec.parallel_for(v.x.size(), JacobiSweep{p, Exec::ptr(v.x), Exec::ptr(v.b), kOmega, Exec::ptr(v.tmp)});
-      v.x.swap(v.tmp);
-    }
-  }
-
-  void cycle(const Exec& exec, std::size_t l) {
+  // Solves level l's A x = b approximately: smooth, correct from the
+  // coarser level, smooth again; the coarsest level is only smoothed.
+  void cycle(const Exec& exec, std::size_t l, const float* b, float* x) {
     Level& v = levels_[l];
     if (l + 1 == levels_.size()) {
-      smooth_from_zero(exec, l, kCoarsestSweeps);
+      smooth(exec, l, b, x, true, kCoarsestSweeps);
       return;
     }
-    smooth_from_zero(exec, l, kSmoothingSweeps);
+    smooth(exec, l, b, x, true, kSmoothingSweeps);
     const PoissonLevel p = view(l);
-    exec.parallel_for(v.x.size(), PoissonResidual{p, Exec::ptr(v.x), Exec::ptr(v.b), Exec::ptr(v.tmp)});
+    exec.parallel_for(v.tmp.size(), PoissonResidual{p, x, b, Exec::ptr(v.tmp)});
     Level& c = levels_[l + 1];
     exec.parallel_for_3d(c.nx, c.ny, c.nz, RestrictResidual{p, view(l + 1), Exec::ptr(v.tmp), Exec::ptr(c.b)});
-    cycle(exec, l + 1);
-    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAndAdd{view(l + 1), p, Exec::ptr(c.x), Exec::ptr(v.x)});
-    smooth(exec, l, kSmoothingSweeps);
+    cycle(exec, l + 1, Exec::ptr(c.b), Exec::ptr(c.x));
+    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAndAdd{view(l + 1), p, Exec::ptr(c.x), x});
+    smooth(exec, l, b, x, false, kSmoothingSweeps);
   }
 
   std::vector<Level> levels_;

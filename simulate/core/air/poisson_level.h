@@ -153,4 +153,24 @@ struct JacobiSweepFromZero {
   }
 };
 
+// `sweeps` damped Jacobi sweeps as the passes of one parallel_sweeps call,
+// alternating between x and tmp so that the last pass writes x. From zero,
+// the first pass is JacobiSweepFromZero; from a guess in x, sweeps must be
+// even, or the first pass would write the x it reads.
+struct JacobiSweeps {
+  PoissonLevel level;
+  const float* b;
+  float omega;
+  bool from_zero;
+  int sweeps;
+  float* x;
+  float* tmp;
+  DP_HD void operator()(int s, std::size_t c) const {
+    const bool writes_x = (sweeps - 1 - s) % 2 == 0;
+    float* out = writes_x ? x : tmp;
+    if (s == 0 && from_zero) JacobiSweepFromZero{level, b, omega, out}(c);
+    else JacobiSweep{level, writes_x ? tmp : x, b, omega, out}(c);
+  }
+};
+
 }  // namespace dp

@@ -1,8 +1,12 @@
 #pragma once
 // The one summation order both backends use, so that a sum does not depend on
-// thread count, schedule or backend: values are summed in index order within
-// fixed blocks of kSumBlock elements, then the block sums in block order.
-// Sums are carried in double.
+// thread count, schedule or backend. Values are cut into fixed blocks of
+// kSumBlock elements. Within a block, lane l (of kSumLanes) adds the elements
+// l, l + kSumLanes, l + 2 kSumLanes, ... in index order; the lanes are then
+// folded as a binary tree (lane l takes lane l + 16, then l + 8, ... l + 1),
+// which is what one GPU warp does with shuffles, so the GPU reads memory
+// coalesced and still adds in exactly the CPU's order. The block sums are
+// added in block order. Sums are carried in double.
 #include <cstddef>
 
 #include "backend/host_device.h"
@@ -10,17 +14,28 @@
 namespace dp {
 
 inline constexpr std::size_t kSumBlock = 1024;
+inline constexpr unsigned kSumLanes = 32;
 
 inline DP_HD std::size_t sum_block_count(std::size_t n) { return (n + kSumBlock - 1) / kSumBlock; }
 
-// Sums the values f(i) of one block, in index order.
+// One lane's share of one block, in index order.
+template <class ValueAt>
+DP_HD double sum_lane(std::size_t block, unsigned lane, std::size_t n, const ValueAt& f) {
+  const std::size_t begin = block * kSumBlock;
+  const std::size_t end = begin + kSumBlock < n ? begin + kSumBlock : n;
+  double s = 0.0;
+  for (std::size_t i = begin + lane; i < end; i += kSumLanes) s += static_cast<double>(f(i));
+  return s;
+}
+
+// The sum of one block: its lanes folded as the warp folds them.
 template <class ValueAt>
 DP_HD double sum_block(std::size_t block, std::size_t n, const ValueAt& f) {
-  std::size_t begin = block * kSumBlock;
-  std::size_t end = begin + kSumBlock < n ? begin + kSumBlock : n;
-  double s = 0.0;
-  for (std::size_t i = begin; i < end; ++i) s += static_cast<double>(f(i));
-  return s;
+  double lane[kSumLanes];
+  for (unsigned l = 0; l < kSumLanes; ++l) lane[l] = sum_lane(block, l, n, f);
+  for (unsigned offset = kSumLanes / 2; offset > 0; offset /= 2)
+    for (unsigned l = 0; l < offset; ++l) lane[l] += lane[l + offset];
+  return lane[0];
 }
 
 }  // namespace dp

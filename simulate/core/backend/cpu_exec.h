@@ -59,6 +59,13 @@ class CpuExec {
     }
   }
 
+  // Calls f(s, i) for s = 0 .. sweeps-1 and every i in [0, n), all of pass
+  // s before any of pass s + 1.
+  template <class F>
+  void parallel_sweeps(std::size_t n, int sweeps, const F& f) const {
+    for (int s = 0; s < sweeps; ++s) parallel_for(n, [&](std::size_t i) { f(s, i); });
+  }
+
   // Stable sort of (keys, values) by key.
   template <class K, class V>
   void sort_by_key(Buffer<K>& keys, Buffer<V>& values) const {

@@ -5,14 +5,11 @@
 #include <thrust/copy.h>
 #include <thrust/device_vector.h>
 #include <thrust/execution_policy.h>
-#include <thrust/functional.h>
-#include <thrust/iterator/counting_iterator.h>
-#include <thrust/iterator/transform_iterator.h>
-#include <thrust/reduce.h>
 #include <thrust/scan.h>
 #include <thrust/sort.h>
 
 #include <cstddef>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,32 +38,107 @@ __global__ void for_each_point(int nx, int ny, int nz, F f) {
   if (i < nx && j < ny && k < nz) f(i, j, k);
 }
 
+// One warp per block of kSumBlock values: each lane reduces its strided
+// share, then the warp folds its lanes as a tree (blocked_sum.h). out[b]
+// receives block b's value.
+template <class T, class LaneValue, class Combine>
+__global__ void reduce_blocks_by_warps(std::size_t blocks, LaneValue lane_value, Combine combine, T* out) {
+  const std::size_t block = (static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x) / kSumLanes;
+  const unsigned lane = threadIdx.x % kSumLanes;
+  if (block >= blocks) return;  // whole warps leave together
+  T v = lane_value(block, lane);
+  for (unsigned offset = kSumLanes / 2; offset > 0; offset /= 2) v = combine(v, __shfl_down_sync(0xffffffffu, v, offset));
+  if (lane == 0) out[block] = v;
+}
+
 template <class ValueAt>
-struct BlockSum {
+struct SumLane {
   std::size_t n;
   ValueAt f;
-  double* out;
-  __device__ void operator()(std::size_t b) const { out[b] = sum_block(b, n, f); }
+  __device__ double operator()(std::size_t block, unsigned lane) const { return sum_lane(block, lane, n, f); }
+};
+struct Add {
+  __device__ double operator()(double a, double b) const { return a + b; }
 };
 
+template <class ValueAt>
+struct MaxLane {
+  std::size_t n;
+  ValueAt f;
+  float lowest;
+  __device__ float operator()(std::size_t block, unsigned lane) const {
+    float m = lowest;
+    const std::size_t end = (block + 1) * kSumBlock < n ? (block + 1) * kSumBlock : n;
+    for (std::size_t i = block * kSumBlock + lane; i < end; i += kSumLanes) m = fmaxf(m, static_cast<float>(f(i)));
+    return m;
+  }
+};
+struct Max {
+  __device__ float operator()(float a, float b) const { return fmaxf(a, b); }
+};
+
+// The first index of the lane's share where pred holds, or n.
 template <class Pred>
-struct IndexIfTrue {
+struct FirstLane {
   std::size_t n;
   Pred pred;
-  __device__ std::size_t operator()(std::size_t i) const { return pred(i) ? i : n; }
+  __device__ unsigned long long operator()(std::size_t block, unsigned lane) const {
+    const std::size_t end = (block + 1) * kSumBlock < n ? (block + 1) * kSumBlock : n;
+    for (std::size_t i = block * kSumBlock + lane; i < end; i += kSumLanes)
+      if (pred(i)) return i;
+    return n;
+  }
+};
+struct Min {
+  __device__ unsigned long long operator()(unsigned long long a, unsigned long long b) const { return a < b ? a : b; }
 };
 
-template <class ValueAt>
-struct AsFloat {
-  ValueAt f;
-  __device__ float operator()(std::size_t i) const { return static_cast<float>(f(i)); }
+// Runs `sweeps` dependent passes of f(sweep, i) over [0, n) in one thread
+// block, with a barrier between passes (n at most one block's threads).
+template <class F>
+__global__ void sweeps_in_one_block(std::size_t n, int sweeps, F f) {
+  for (int s = 0; s < sweeps; ++s) {
+    for (std::size_t i = threadIdx.x; i < n; i += blockDim.x) f(s, i);
+    __syncthreads();
+  }
+}
+
+// One pass of a parallel_sweeps call too large for one block.
+template <class F>
+struct SweepOf {
+  F f;
+  int sweep;
+  __device__ void operator()(std::size_t i) const { f(sweep, i); }
 };
 
-struct MinIndex {
-  __device__ std::size_t operator()(std::size_t a, std::size_t b) const { return a < b ? a : b; }
-};
-struct MaxFloat {
-  __device__ float operator()(float a, float b) const { return a > b ? a : b; }
+// Device and pinned host memory for the per-block results of reductions,
+// kept between calls: allocating per call cost more than the reduction.
+class ReductionScratch {
+ public:
+  ReductionScratch() = default;
+  ReductionScratch(const ReductionScratch&) = delete;
+  ReductionScratch& operator=(const ReductionScratch&) = delete;
+  ~ReductionScratch() {
+    cudaFree(device_);
+    cudaFreeHost(host_);
+  }
+  void reserve(std::size_t bytes) {
+    if (bytes <= bytes_) return;
+    cudaFree(device_);
+    cudaFreeHost(host_);
+    device_ = host_ = nullptr;
+    bytes_ = 0;
+    check(cudaMalloc(&device_, bytes), "cudaMalloc (reduction scratch)");
+    check(cudaMallocHost(&host_, bytes), "cudaMallocHost (reduction scratch)");
+    bytes_ = bytes;
+  }
+  void* device() const { return device_; }
+  void* host() const { return host_; }
+
+ private:
+  void* device_ = nullptr;
+  void* host_ = nullptr;
+  std::size_t bytes_ = 0;
 };
 
 }  // namespace cuda_detail
@@ -126,31 +198,77 @@ class CudaExec {
     thrust::exclusive_scan(thrust::cuda::par, in.begin(), in.end(), out.begin());
   }
 
-  // Same blocked order as CpuExec::sum, so both backends add in one order.
+  // Same order as CpuExec::sum (blocked_sum.h), so both backends add alike.
   template <class ValueAt>
   double sum(std::size_t n, const ValueAt& f) const {
-    thrust::device_vector<double> partial(sum_block_count(n));
-    parallel_for(partial.size(), cuda_detail::BlockSum<ValueAt>{n, f, thrust::raw_pointer_cast(partial.data())});
-    std::vector<double> h = download(partial);
+    const std::size_t blocks = sum_block_count(n);
+    const double* partial = reduce_blocks<double>(blocks, cuda_detail::SumLane<ValueAt>{n, f}, cuda_detail::Add{});
     double s = 0.0;
-    for (double p : h) s += p;
+    for (std::size_t b = 0; b < blocks; ++b) s += partial[b];
     return s;
   }
 
+  // Smallest i in [0, n) with pred(i), or n when there is none.
   template <class Pred>
   std::size_t find_first(std::size_t n, const Pred& pred) const {
-    auto idx = thrust::make_transform_iterator(thrust::counting_iterator<std::size_t>(0),
-                                               cuda_detail::IndexIfTrue<Pred>{n, pred});
-    return thrust::reduce(thrust::cuda::par, idx, idx + n, n, cuda_detail::MinIndex{});
+    const std::size_t blocks = sum_block_count(n);
+    const unsigned long long* first =
+        reduce_blocks<unsigned long long>(blocks, cuda_detail::FirstLane<Pred>{n, pred}, cuda_detail::Min{});
+    std::size_t m = n;
+    for (std::size_t b = 0; b < blocks; ++b) m = first[b] < m ? static_cast<std::size_t>(first[b]) : m;
+    return m;
   }
 
+  // Largest f(i) over [0, n); `lowest` when n = 0.
   template <class ValueAt>
   float max(std::size_t n, const ValueAt& f, float lowest) const {
-    auto v = thrust::make_transform_iterator(thrust::counting_iterator<std::size_t>(0), cuda_detail::AsFloat<ValueAt>{f});
-    return thrust::reduce(thrust::cuda::par, v, v + n, lowest, cuda_detail::MaxFloat{});
+    const std::size_t blocks = sum_block_count(n);
+    const float* block_max = reduce_blocks<float>(blocks, cuda_detail::MaxLane<ValueAt>{n, f, lowest}, cuda_detail::Max{});
+    float m = lowest;
+    for (std::size_t b = 0; b < blocks; ++b) m = block_max[b] > m ? block_max[b] : m;
+    return m;
+  }
+
+  // Calls f(s, i) for s = 0 .. sweeps-1 and every i in [0, n), all of pass
+  // s before any of pass s + 1. A small n runs in one thread block with
+  // barriers between passes: one launch instead of one per pass.
+  template <class F>
+  void parallel_sweeps(std::size_t n, int sweeps, const F& f) const {
+    if (n == 0 || sweeps <= 0) return;
+    if (n <= kOneBlockSweeps) {
+      const unsigned threads = static_cast<unsigned>((n + 31) / 32 * 32);
+      cuda_detail::sweeps_in_one_block<<<1, threads>>>(n, sweeps, f);
+      cuda_detail::check(cudaGetLastError(), "kernel launch");
+      return;
+    }
+    for (int s = 0; s < sweeps; ++s) parallel_for(n, cuda_detail::SweepOf<F>{f, s});
   }
 
   void synchronize() const { cuda_detail::check(cudaDeviceSynchronize(), "cudaDeviceSynchronize"); }
+
+ private:
+  static constexpr std::size_t kOneBlockSweeps = 1024;
+
+  // Launches one warp per block, copies the per-block results to pinned
+  // host memory and waits for them; returns the host copy (valid until the
+  // next reduction).
+  template <class T, class LaneValue, class Combine>
+  const T* reduce_blocks(std::size_t blocks, const LaneValue& lane_value, const Combine& combine) const {
+    if (blocks == 0) return nullptr;
+    scratch_->reserve(blocks * sizeof(T));
+    T* device = static_cast<T*>(scratch_->device());
+    constexpr unsigned kThreads = 256;
+    const std::size_t threads = blocks * kSumLanes;
+    const unsigned grid = static_cast<unsigned>((threads + kThreads - 1) / kThreads);
+    cuda_detail::reduce_blocks_by_warps<T><<<grid, kThreads>>>(blocks, lane_value, combine, device);
+    cuda_detail::check(cudaGetLastError(), "kernel launch");
+    cuda_detail::check(cudaMemcpyAsync(scratch_->host(), device, blocks * sizeof(T), cudaMemcpyDeviceToHost, 0),
+                       "cudaMemcpyAsync (reduction)");
+    cuda_detail::check(cudaStreamSynchronize(0), "cudaStreamSynchronize (reduction)");
+    return static_cast<const T*>(scratch_->host());
+  }
+
+  std::shared_ptr<cuda_detail::ReductionScratch> scratch_ = std::make_shared<cuda_detail::ReductionScratch>();
 };
 
 }  // namespace dp

@@ -1,0 +1,105 @@
+// The CUDA launcher's reductions and sweeps against CpuExec (label gpu;
+// skipped, with the reason, where no GPU is present). Sums are compared
+// bitwise: both backends add in the order of blocked_sum.h, and the values
+// summed involve no multiplication the GPU could contract into an FMA.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "backend/cpu_exec.h"
+#include "backend/cuda_exec.cuh"
+#include "cuda_test_support.cuh"
+
+namespace dp {
+namespace {
+
+class CudaBackend : public test::RequiresGpu {};
+
+struct ValueOf {
+  const float* v;
+  DP_HD float operator()(std::size_t i) const { return v[i]; }
+};
+struct IsAbove {
+  const float* v;
+  float bound;
+  DP_HD bool operator()(std::size_t i) const { return v[i] > bound; }
+};
+// Pass s: out[i] = in[i] + s, reading the previous pass's output of the
+// neighbour i + 1, so a missing barrier between passes shows.
+struct ShiftingPasses {
+  std::size_t n;
+  float* a;
+  float* b;
+  DP_HD void operator()(int s, std::size_t i) const {
+    const float* in = s % 2 ? b : a;
+    float* out = s % 2 ? a : b;
+    out[i] = in[(i + 1) % n] + static_cast<float>(s);
+  }
+};
+
+std::vector<float> random_values(std::size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  std::vector<float> v(n);
+  for (float& x : v) x = u(rng);
+  return v;
+}
+
+TEST_F(CudaBackend, SumsAreBitwiseThoseOfTheCpu) {
+  CudaExec gpu(0);
+  CpuExec cpu(3);
+  for (std::size_t n : {std::size_t{1}, std::size_t{31}, std::size_t{1024}, std::size_t{1025}, std::size_t{262144 + 77}}) {
+    SCOPED_TRACE(n);
+    const std::vector<float> host = random_values(n, static_cast<unsigned>(n));
+    CudaExec::Buffer<float> device;
+    CudaExec::upload(device, host);
+    const double on_gpu = gpu.sum(n, ValueOf{CudaExec::ptr(device)});
+    const double on_cpu = cpu.sum(n, ValueOf{host.data()});
+    EXPECT_EQ(on_gpu, on_cpu);
+    long double reference = 0;
+    for (float x : host) reference += x;
+    EXPECT_NEAR(on_cpu, static_cast<double>(reference), 1e-12 * static_cast<double>(n));
+  }
+  EXPECT_EQ(gpu.sum(0, ValueOf{nullptr}), 0.0);
+}
+
+TEST_F(CudaBackend, MaxAndFirstMatchTheCpu) {
+  CudaExec gpu(0);
+  CpuExec cpu(2);
+  const std::size_t n = 300000;
+  std::vector<float> host = random_values(n, 7);
+  host[123457] = 5.0f;
+  host[250001] = 4.0f;
+  CudaExec::Buffer<float> device;
+  CudaExec::upload(device, host);
+  EXPECT_EQ(gpu.max(n, ValueOf{CudaExec::ptr(device)}, -1e30f), 5.0f);
+  EXPECT_EQ(cpu.max(n, ValueOf{host.data()}, -1e30f), 5.0f);
+  EXPECT_EQ(gpu.find_first(n, IsAbove{CudaExec::ptr(device), 3.0f}), std::size_t{123457});
+  EXPECT_EQ(gpu.find_first(n, IsAbove{CudaExec::ptr(device), 4.5f}), std::size_t{123457});
+  EXPECT_EQ(gpu.find_first(n, IsAbove{CudaExec::ptr(device), 6.0f}), n);
+  EXPECT_EQ(gpu.max(0, ValueOf{nullptr}, -2.0f), -2.0f);
+}
+
+TEST_F(CudaBackend, SweepsSeeThePreviousPassEntire) {
+  CudaExec gpu(0);
+  CpuExec cpu(2);
+  for (std::size_t n : {std::size_t{64}, std::size_t{343}, std::size_t{5000}}) {  // one block, and one launch per pass
+    SCOPED_TRACE(n);
+    const std::vector<float> start = random_values(n, 11);
+    std::vector<float> a = start, b(n);
+    CudaExec::Buffer<float> da, db(n);
+    CudaExec::upload(da, start);
+    cpu.parallel_sweeps(n, 9, ShiftingPasses{n, a.data(), b.data()});
+    gpu.parallel_sweeps(n, 9, ShiftingPasses{n, CudaExec::ptr(da), CudaExec::ptr(db)});
+    EXPECT_EQ(CudaExec::download(db), b);  // 9 passes: the last wrote b
+    // Independently: after 9 passes element i holds start[(i + 9) % n] + 0 + 1 + ... + 8.
+    for (std::size_t i = 0; i < n; i += n / 7) EXPECT_NEAR(b[i], start[(i + 9) % n] + 36.0f, 1e-5f);
+  }
+}
+
+}  // namespace
+}  // namespace dp
