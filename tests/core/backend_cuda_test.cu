@@ -52,7 +52,8 @@ std::vector<float> random_values(std::size_t n, unsigned seed) {
 TEST_F(CudaBackend, SumsAreBitwiseThoseOfTheCpu) {
   CudaExec gpu(0);
   CpuExec cpu(3);
-  for (std::size_t n : {std::size_t{1}, std::size_t{31}, std::size_t{1024}, std::size_t{1025}, std::size_t{262144 + 77}}) {
+  for (std::size_t n : {std::size_t{1}, std::size_t{31}, std::size_t{1024}, std::size_t{1025}, std::size_t{262144 + 77},
+                        std::size_t{1024 * 1024 + 5000}}) {  // three levels of block sums
     SCOPED_TRACE(n);
     const std::vector<float> host = random_values(n, static_cast<unsigned>(n));
     CudaExec::Buffer<float> device;
@@ -60,6 +61,10 @@ TEST_F(CudaBackend, SumsAreBitwiseThoseOfTheCpu) {
     const double on_gpu = gpu.sum(n, ValueOf{CudaExec::ptr(device)});
     const double on_cpu = cpu.sum(n, ValueOf{host.data()});
     EXPECT_EQ(on_gpu, on_cpu);
+    // The same sum left on the device, in the same order.
+    CudaExec::Buffer<double> scratch(sum_scratch_count(n) + 1);
+    gpu.sum_into(n, ValueOf{CudaExec::ptr(device)}, CudaExec::ptr(scratch) + 1, CudaExec::ptr(scratch));
+    EXPECT_EQ(CudaExec::download_one(scratch, 0), on_cpu);
     long double reference = 0;
     for (float x : host) reference += x;
     EXPECT_NEAR(on_cpu, static_cast<double>(reference), 1e-12 * static_cast<double>(n));

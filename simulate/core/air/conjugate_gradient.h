@@ -6,10 +6,19 @@
 // thread count. When no cell touches an open face the system is singular
 // (pressure is defined up to a constant): the right-hand side and each
 // preconditioned residual are then made mean-free over the unknowns.
+//
+// The iteration's scalars (ρ = r·z, d·q, r·r) stay where the vectors are
+// and the kernels read them there, so on the GPU an iteration needs no host
+// round trip: Exec::kIterationsPerCheck iterations run as one recorded
+// graph between convergence checks. An iteration that finds the solve
+// converged (or at its cap) sets a flag that freezes x, r and d in the
+// iterations after it, so the result is that of checking after every
+// iteration, on both backends.
 #include <cmath>
 #include <cstdint>
 
 #include "air/multigrid_mcadams2010.h"
+#include "backend/blocked_sum.h"
 
 namespace dp {
 
@@ -32,22 +41,17 @@ struct CountWhere {
   const std::uint8_t* mask;
   DP_HD double operator()(std::size_t i) const { return mask[i] ? 1.0 : 0.0; }
 };
-struct SubtractWhere {
-  float value;
+// a -= sum / count on the mask (a mean read where it was summed), 0 elsewhere;
+// nothing when the mask is empty.
+struct SubtractMeanWhere {
+  const double* sum;
+  const double* count;
   const std::uint8_t* mask;
   float* a;
-  DP_HD void operator()(std::size_t i) const { a[i] = mask[i] ? a[i] - value : 0.0f; }
-};
-// x += alpha d and r -= alpha q, one pass over both.
-struct StepIterateAndResidual {
-  float alpha;
-  const float* d;
-  const float* q;
-  float* x;
-  float* r;
   DP_HD void operator()(std::size_t i) const {
-    x[i] += alpha * d[i];
-    r[i] += -alpha * q[i];
+    if (!(*count > 0)) return;
+    const float mean = static_cast<float>(*sum / *count);
+    a[i] = mask[i] ? a[i] - mean : 0.0f;
   }
 };
 // d = z + s d
@@ -56,6 +60,81 @@ struct Xpay {
   float s;
   float* d;
   DP_HD void operator()(std::size_t i) const { d[i] = z[i] + s * d[i]; }
+};
+
+// The iteration's scalars and state, in one small buffer of doubles.
+struct PcgScalars {
+  enum : int { kRho, kDq, kRr, kRhoNext, kBNorm, kTolerance, kMeanSum, kMeanCount, kStopped, kIterations, kMaxIterations, kCount };
+  double* s;
+  DP_HD bool stopped() const { return s[kStopped] != 0.0; }
+};
+
+// x += alpha d and r -= alpha q with alpha = rho / (d.q), one pass over both;
+// nothing once stopped, or when d.q is not positive (converged to rounding).
+struct StepIterateAndResidual {
+  PcgScalars p;
+  const float* d;
+  const float* q;
+  float* x;
+  float* r;
+  DP_HD void operator()(std::size_t i) const {
+    if (p.stopped() || !(p.s[PcgScalars::kDq] > 0.0)) return;
+    const float alpha = static_cast<float>(p.s[PcgScalars::kRho] / p.s[PcgScalars::kDq]);
+    x[i] += alpha * d[i];
+    r[i] += -alpha * q[i];
+  }
+};
+
+// After the step: counts it, and stops on d.q <= 0, on |r| <= tol |b|, or at
+// the iteration cap (one thread).
+struct CountIterationAndTest {
+  PcgScalars p;
+  DP_HD void operator()(std::size_t) const {
+    double* s = p.s;
+    if (p.stopped()) return;
+    if (!(s[PcgScalars::kDq] > 0.0)) {
+      s[PcgScalars::kStopped] = 1.0;
+      return;
+    }
+    s[PcgScalars::kIterations] += 1.0;
+    if (sqrt(s[PcgScalars::kRr]) <= s[PcgScalars::kTolerance] * s[PcgScalars::kBNorm] ||
+        s[PcgScalars::kIterations] >= s[PcgScalars::kMaxIterations])
+      s[PcgScalars::kStopped] = 1.0;
+  }
+};
+
+// d = z + beta d with beta = rho_next / rho; nothing once stopped.
+struct UpdateDirection {
+  PcgScalars p;
+  const float* z;
+  float* d;
+  DP_HD void operator()(std::size_t i) const {
+    if (p.stopped()) return;
+    d[i] = z[i] + static_cast<float>(p.s[PcgScalars::kRhoNext] / p.s[PcgScalars::kRho]) * d[i];
+  }
+};
+
+// rho = rho_next, after every element has used the old rho (one thread).
+struct AdvanceRho {
+  PcgScalars p;
+  DP_HD void operator()(std::size_t) const {
+    if (!p.stopped()) p.s[PcgScalars::kRho] = p.s[PcgScalars::kRhoNext];
+  }
+};
+
+// Starts an iteration loop: the norms and the cap where the kernels read them.
+struct StartIterations {
+  PcgScalars p;
+  double b_norm;
+  double tolerance;
+  int max_iterations;
+  DP_HD void operator()(std::size_t) const {
+    p.s[PcgScalars::kBNorm] = b_norm;
+    p.s[PcgScalars::kTolerance] = tolerance;
+    p.s[PcgScalars::kMaxIterations] = max_iterations;
+    p.s[PcgScalars::kIterations] = 0.0;
+    p.s[PcgScalars::kStopped] = max_iterations > 0 ? 0.0 : 1.0;
+  }
 };
 
 template <class Exec>
@@ -67,8 +146,11 @@ class PoissonPcg {
   void resize(int nx, int ny, int nz, DomainFaces faces) {
     const std::size_t n = static_cast<std::size_t>(nx) * ny * nz;
     for (auto* b : {&r_, &z_, &d_, &q_}) b->resize(n);
+    partial_.resize(sum_scratch_count(n) + 1);
+    scalars_.resize(PcgScalars::kCount);
     multigrid_.resize(nx, ny, nz, faces);
     singular_ = !faces.any_open();
+    iterations_.reset();
   }
 
   void set_unknowns(const Exec& exec, const Buffer<std::uint8_t>& unknown) { multigrid_.set_unknowns(exec, unknown); }
@@ -79,7 +161,7 @@ class PoissonPcg {
   PcgResult solve(const Exec& exec, Buffer<float>& b, Buffer<float>& x, float tolerance, int max_iterations) {
     const PoissonLevel a = multigrid_.view(0);
     const std::size_t n = b.size();
-    if (singular_) remove_mean(exec, b);
+    if (singular_) remove_mean(exec, Exec::ptr(b));
     const double b_norm = std::sqrt(exec.sum(n, ProductOf{Exec::ptr(b), Exec::ptr(b)}));
     PcgResult result;
     if (b_norm == 0.0) {
@@ -87,46 +169,69 @@ class PoissonPcg {
       return result;
     }
     exec.parallel_for(n, PoissonResidual{a, Exec::ptr(x), Exec::ptr(b), Exec::ptr(r_)});
-    double r_norm = std::sqrt(exec.sum(n, ProductOf{Exec::ptr(r_), Exec::ptr(r_)}));
+    const double r_norm = std::sqrt(exec.sum(n, ProductOf{Exec::ptr(r_), Exec::ptr(r_)}));
     result.relative_residual = static_cast<float>(r_norm / b_norm);
     if (r_norm <= tolerance * b_norm) return result;
     precondition(exec);
     exec.parallel_for(n, Xpay{Exec::ptr(z_), 0.0f, Exec::ptr(d_)});
-    double rz = exec.sum(n, ProductOf{Exec::ptr(r_), Exec::ptr(z_)});
-    while (result.iterations < max_iterations) {
-      exec.parallel_for(n, ApplyPoisson{a, Exec::ptr(d_), Exec::ptr(q_)});
-      const double dq = exec.sum(n, ProductOf{Exec::ptr(d_), Exec::ptr(q_)});
-      if (!(dq > 0.0)) break;  // converged to rounding
-      const float alpha = static_cast<float>(rz / dq);
-      exec.parallel_for(n, StepIterateAndResidual{alpha, Exec::ptr(d_), Exec::ptr(q_), Exec::ptr(x), Exec::ptr(r_)});
-      ++result.iterations;
-      r_norm = std::sqrt(exec.sum(n, ProductOf{Exec::ptr(r_), Exec::ptr(r_)}));
-      result.relative_residual = static_cast<float>(r_norm / b_norm);
-      if (r_norm <= tolerance * b_norm) break;
-      precondition(exec);
-      const double rz_next = exec.sum(n, ProductOf{Exec::ptr(r_), Exec::ptr(z_)});
-      exec.parallel_for(n, Xpay{Exec::ptr(z_), static_cast<float>(rz_next / rz), Exec::ptr(d_)});
-      rz = rz_next;
+    const PcgScalars p = scalars();
+    exec.sum_into(n, ProductOf{Exec::ptr(r_), Exec::ptr(z_)}, Exec::ptr(partial_), p.s + PcgScalars::kRho);
+    exec.parallel_for(1, StartIterations{p, b_norm, static_cast<double>(tolerance), max_iterations});
+    if (Exec::ptr(x) != recorded_x_) {  // the recording bakes x in
+      iterations_.reset();
+      recorded_x_ = Exec::ptr(x);
     }
+    for (;;) {
+      exec.replay(iterations_, [&] {
+        for (int k = 0; k < Exec::kIterationsPerCheck; ++k) iterate(exec, Exec::ptr(x));
+      });
+      if (Exec::download_one(scalars_, PcgScalars::kStopped) != 0.0) break;
+    }
+    const std::vector<double> s = Exec::download(scalars_);
+    result.iterations = static_cast<int>(s[PcgScalars::kIterations]);
+    if (result.iterations > 0) result.relative_residual = static_cast<float>(std::sqrt(s[PcgScalars::kRr]) / b_norm);
     return result;
   }
 
  private:
-  void precondition(const Exec& exec) {
-    multigrid_.apply(exec, r_, z_);
-    if (singular_) remove_mean(exec, z_);
+  PcgScalars scalars() { return PcgScalars{Exec::ptr(scalars_)}; }
+
+  // One CG iteration; launches only, nothing waits for the device.
+  void iterate(const Exec& exec, float* x) {
+    const std::size_t n = r_.size();
+    const PcgScalars p = scalars();
+    double* partial = Exec::ptr(partial_);
+    exec.parallel_for(n, ApplyPoisson{multigrid_.view(0), Exec::ptr(d_), Exec::ptr(q_)});
+    exec.sum_into(n, ProductOf{Exec::ptr(d_), Exec::ptr(q_)}, partial, p.s + PcgScalars::kDq);
+    exec.parallel_for(n, StepIterateAndResidual{p, Exec::ptr(d_), Exec::ptr(q_), x, Exec::ptr(r_)});
+    exec.sum_into(n, ProductOf{Exec::ptr(r_), Exec::ptr(r_)}, partial, p.s + PcgScalars::kRr);
+    exec.parallel_for(1, CountIterationAndTest{p});
+    precondition(exec);
+    exec.sum_into(n, ProductOf{Exec::ptr(r_), Exec::ptr(z_)}, partial, p.s + PcgScalars::kRhoNext);
+    exec.parallel_for(n, UpdateDirection{p, Exec::ptr(z_), Exec::ptr(d_)});
+    exec.parallel_for(1, AdvanceRho{p});
   }
 
-  void remove_mean(const Exec& exec, Buffer<float>& v) {
+  void precondition(const Exec& exec) {
+    multigrid_.apply(exec, r_, z_);
+    if (singular_) remove_mean(exec, Exec::ptr(z_));
+  }
+
+  // v -= mean of v over the unknowns; on the device, without a round trip.
+  void remove_mean(const Exec& exec, float* v) {
+    const std::size_t n = r_.size();
     const std::uint8_t* mask = Exec::ptr(multigrid_.unknowns());
-    const double count = exec.sum(v.size(), CountWhere{mask});
-    if (count == 0) return;
-    const double mean = exec.sum(v.size(), ValueWhere{Exec::ptr(v), mask}) / count;
-    exec.parallel_for(v.size(), SubtractWhere{static_cast<float>(mean), mask, Exec::ptr(v)});
+    const PcgScalars p = scalars();
+    exec.sum_into(n, CountWhere{mask}, Exec::ptr(partial_), p.s + PcgScalars::kMeanCount);
+    exec.sum_into(n, ValueWhere{v, mask}, Exec::ptr(partial_), p.s + PcgScalars::kMeanSum);
+    exec.parallel_for(n, SubtractMeanWhere{p.s + PcgScalars::kMeanSum, p.s + PcgScalars::kMeanCount, mask, v});
   }
 
   MultigridPreconditioner<Exec> multigrid_;
   Buffer<float> r_, z_, d_, q_;
+  Buffer<double> partial_, scalars_;
+  typename Exec::Recording iterations_;
+  const float* recorded_x_ = nullptr;
   bool singular_ = false;
 };
 

@@ -157,6 +157,12 @@ struct ProlongAndAdd {
   }
 };
 
+struct CopyBytes {
+  const std::uint8_t* in;
+  std::uint8_t* out;
+  DP_HD void operator()(std::size_t i) const { out[i] = in[i]; }
+};
+
 struct ClearFloats {
   float* x;
   DP_HD void operator()(std::size_t i) const { x[i] = 0.0f; }
@@ -206,7 +212,8 @@ class MultigridPreconditioner {
 
   // Level 0's unknowns are copied; coarser ones follow by coarsening.
   void set_unknowns(const Exec& exec, const Buffer<std::uint8_t>& fine_unknown) {
-    levels_[0].unknown = fine_unknown;
+    // Copied in place: a recorded solve (CUDA graph) holds these buffers' addresses.
+    exec.parallel_for(fine_unknown.size(), CopyBytes{Exec::ptr(fine_unknown), Exec::ptr(levels_[0].unknown)});
     for (std::size_t l = 0; l < levels_.size(); ++l) {
       Level& c = levels_[l];
       if (l > 0) exec.parallel_for(c.unknown.size(), CoarsenUnknown{view(l - 1), c.nx, c.ny, c.nz, Exec::ptr(c.unknown)});
@@ -216,7 +223,7 @@ class MultigridPreconditioner {
 
   // z = M^-1 r, one V-cycle.
   void apply(const Exec& exec, const Buffer<float>& r, Buffer<float>& z) {
-    z.resize(r.size());
+    if (z.size() != r.size()) z.resize(r.size());  // never while recording: sizes are set by then
     cycle(exec, 0, Exec::ptr(r), Exec::ptr(z));
   }
 

@@ -6,7 +6,9 @@
 // folded as a binary tree (lane l takes lane l + 16, then l + 8, ... l + 1),
 // which is what one GPU warp does with shuffles, so the GPU reads memory
 // coalesced and still adds in exactly the CPU's order. The block sums are
-// added in block order. Sums are carried in double.
+// then summed the same way, as values of their own (block sums of block
+// sums), until one value is left: every level is one parallel pass on the
+// GPU, none is a serial loop. Sums are carried in double.
 #include <cstddef>
 
 #include "backend/host_device.h"
@@ -36,6 +38,21 @@ DP_HD double sum_block(std::size_t block, std::size_t n, const ValueAt& f) {
   for (unsigned offset = kSumLanes / 2; offset > 0; offset /= 2)
     for (unsigned l = 0; l < offset; ++l) lane[l] += lane[l + offset];
   return lane[0];
+}
+
+// The values of one level of block sums, as a ValueAt.
+struct BlockSums {
+  const double* sums;
+  DP_HD double operator()(std::size_t i) const { return sums[i]; }
+};
+
+// Room for every level of block sums below the first one's sum_block_count(n)
+// values, down to (excluding) the final one: what a reduction that keeps its
+// levels in one buffer needs.
+inline DP_HD std::size_t sum_scratch_count(std::size_t n) {
+  std::size_t total = 0;
+  for (std::size_t blocks = sum_block_count(n); blocks > 1; blocks = sum_block_count(blocks)) total += blocks;
+  return total;
 }
 
 }  // namespace dp

@@ -22,6 +22,10 @@ class CpuExec {
   template <class T>
   using Buffer = std::vector<T>;
 
+  // Convergence checks of iterative solvers after every iteration: on the
+  // CPU a check costs nothing and an iteration past convergence a lot.
+  static constexpr int kIterationsPerCheck = 1;
+
   explicit CpuExec(int threads) : threads_(threads > 0 ? threads : 1) { omp_set_num_threads(threads_); }
 
   int threads() const { return threads_; }
@@ -81,11 +85,31 @@ class CpuExec {
   // Sum of f(i) over [0, n) in the blocked order (see blocked_sum.h).
   template <class ValueAt>
   double sum(std::size_t n, const ValueAt& f) const {
-    std::vector<double> partial(sum_block_count(n));
-    parallel_for(partial.size(), [&](std::size_t b) { partial[b] = sum_block(b, n, f); });
-    double s = 0.0;
-    for (double p : partial) s += p;
-    return s;
+    if (n == 0) return 0.0;
+    std::vector<double> level(sum_block_count(n));
+    parallel_for(level.size(), [&](std::size_t b) { level[b] = sum_block(b, n, f); });
+    while (level.size() > 1) {
+      std::vector<double> next(sum_block_count(level.size()));
+      for (std::size_t b = 0; b < next.size(); ++b) next[b] = sum_block(b, level.size(), BlockSums{level.data()});
+      level.swap(next);
+    }
+    return level[0];
+  }
+
+  // *result = sum(n, f): the CUDA backend's interface, where the result
+  // stays on the device; `scratch` (sum_scratch_count(n) values) is unused.
+  template <class ValueAt>
+  void sum_into(std::size_t n, const ValueAt& f, double* /*scratch*/, double* result) const {
+    *result = sum(n, f);
+  }
+
+  // A recorded sequence of launches (a CUDA graph there) simply runs here.
+  struct Recording {
+    void reset() {}
+  };
+  template <class Body>
+  void replay(Recording&, const Body& body) const {
+    body();
   }
 
   // Smallest i in [0, n) with pred(i), or n when there is none.

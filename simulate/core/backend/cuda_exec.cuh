@@ -111,6 +111,18 @@ struct SweepOf {
   __device__ void operator()(std::size_t i) const { f(sweep, i); }
 };
 
+class Stream {
+ public:
+  Stream() { check(cudaStreamCreate(&stream_), "cudaStreamCreate"); }
+  Stream(const Stream&) = delete;
+  Stream& operator=(const Stream&) = delete;
+  ~Stream() { cudaStreamDestroy(stream_); }
+  cudaStream_t get() const { return stream_; }
+
+ private:
+  cudaStream_t stream_ = nullptr;
+};
+
 // Device and pinned host memory for the per-block results of reductions,
 // kept between calls: allocating per call cost more than the reduction.
 class ReductionScratch {
@@ -148,7 +160,20 @@ class CudaExec {
   template <class T>
   using Buffer = thrust::device_vector<T>;
 
-  explicit CudaExec(int device = 0) { cuda_detail::check(cudaSetDevice(device), "cudaSetDevice"); }
+  // Convergence checks of iterative solvers (host round trips) every this
+  // many iterations; the iterations between run as one recorded graph.
+  static constexpr int kIterationsPerCheck = 4;
+
+  explicit CudaExec(int device = 0) {
+    cuda_detail::check(cudaSetDevice(device), "cudaSetDevice");
+    stream_ = std::make_shared<cuda_detail::Stream>();
+  }
+
+  // Every kernel of this backend runs on this stream: a blocking stream, so
+  // it stays ordered with Thrust's vector operations on the default stream,
+  // and one that can be captured into a CUDA graph (the default stream
+  // cannot).
+  cudaStream_t stream() const { return stream_->get(); }
 
   static constexpr const char* name() { return "cuda"; }
 
@@ -172,7 +197,7 @@ class CudaExec {
     if (n == 0) return;
     constexpr unsigned kBlock = 256;
     unsigned blocks = static_cast<unsigned>((n + kBlock - 1) / kBlock);
-    cuda_detail::for_each_index<<<blocks, kBlock>>>(n, f);
+    cuda_detail::for_each_index<<<blocks, kBlock, 0, stream()>>>(n, f);
     cuda_detail::check(cudaGetLastError(), "kernel launch");
   }
 
@@ -183,29 +208,86 @@ class CudaExec {
     if (nx <= 0 || ny <= 0 || nz <= 0) return;
     const dim3 block(32, 4, 2);
     const dim3 blocks((nx + block.x - 1) / block.x, (ny + block.y - 1) / block.y, (nz + block.z - 1) / block.z);
-    cuda_detail::for_each_point<<<blocks, block>>>(nx, ny, nz, f);
+    cuda_detail::for_each_point<<<blocks, block, 0, stream()>>>(nx, ny, nz, f);
     cuda_detail::check(cudaGetLastError(), "kernel launch");
   }
 
   template <class K, class V>
   void sort_by_key(Buffer<K>& keys, Buffer<V>& values) const {
-    thrust::stable_sort_by_key(thrust::cuda::par, keys.begin(), keys.end(), values.begin());
+    thrust::stable_sort_by_key(thrust::cuda::par.on(stream()), keys.begin(), keys.end(), values.begin());
   }
 
   template <class T>
   void exclusive_scan(const Buffer<T>& in, Buffer<T>& out) const {
     out.resize(in.size());
-    thrust::exclusive_scan(thrust::cuda::par, in.begin(), in.end(), out.begin());
+    thrust::exclusive_scan(thrust::cuda::par.on(stream()), in.begin(), in.end(), out.begin());
   }
 
   // Same order as CpuExec::sum (blocked_sum.h), so both backends add alike.
   template <class ValueAt>
   double sum(std::size_t n, const ValueAt& f) const {
-    const std::size_t blocks = sum_block_count(n);
-    const double* partial = reduce_blocks<double>(blocks, cuda_detail::SumLane<ValueAt>{n, f}, cuda_detail::Add{});
-    double s = 0.0;
-    for (std::size_t b = 0; b < blocks; ++b) s += partial[b];
-    return s;
+    scratch_->reserve((sum_scratch_count(n) + 1) * sizeof(double));
+    double* device = static_cast<double*>(scratch_->device());
+    sum_into(n, f, device + 1, device);
+    cuda_detail::check(cudaMemcpyAsync(scratch_->host(), device, sizeof(double), cudaMemcpyDeviceToHost, stream()),
+                       "cudaMemcpyAsync (sum)");
+    cuda_detail::check(cudaStreamSynchronize(stream()), "cudaStreamSynchronize (sum)");
+    return *static_cast<const double*>(scratch_->host());
+  }
+
+  // *result = sum(n, f), left on the device: no host round trip, so it can
+  // be part of a recorded graph. `scratch` holds sum_scratch_count(n) values
+  // (the intermediate levels of block sums).
+  template <class ValueAt>
+  void sum_into(std::size_t n, const ValueAt& f, double* scratch, double* result) const {
+    std::size_t blocks = sum_block_count(n);
+    if (blocks <= 1) {
+      launch_block_sums(std::size_t{1}, cuda_detail::SumLane<ValueAt>{n, f}, result);  // n = 0 gives 0
+      return;
+    }
+    launch_block_sums(blocks, cuda_detail::SumLane<ValueAt>{n, f}, scratch);
+    for (const double* level = scratch;;) {
+      const std::size_t next = sum_block_count(blocks);
+      double* out = next == 1 ? result : scratch + (level - scratch) + blocks;
+      launch_block_sums(next, cuda_detail::SumLane<BlockSums>{blocks, BlockSums{level}}, out);
+      if (next == 1) return;
+      level = out;
+      blocks = next;
+    }
+  }
+
+  // A sequence of launches recorded once as a CUDA graph and replayed:
+  // one launch for the whole sequence. The sequence must launch the same
+  // kernels on the same buffers every time (reset() when they change) and
+  // must not wait for the device.
+  class Recording {
+   public:
+    Recording() = default;
+    Recording(const Recording&) = delete;
+    Recording& operator=(const Recording&) = delete;
+    ~Recording() { reset(); }
+    void reset() {
+      if (graph_) cudaGraphExecDestroy(graph_);
+      graph_ = nullptr;
+    }
+
+   private:
+    friend class CudaExec;
+    cudaGraphExec_t graph_ = nullptr;
+  };
+
+  template <class Body>
+  void replay(Recording& recording, const Body& body) const {
+    if (!recording.graph_) {
+      cudaGraph_t graph = nullptr;
+      cuda_detail::check(cudaStreamBeginCapture(stream(), cudaStreamCaptureModeThreadLocal), "cudaStreamBeginCapture");
+      body();
+      cuda_detail::check(cudaStreamEndCapture(stream(), &graph), "cudaStreamEndCapture");
+      const cudaError_t made = cudaGraphInstantiate(&recording.graph_, graph, 0);
+      cudaGraphDestroy(graph);
+      cuda_detail::check(made, "cudaGraphInstantiate");
+    }
+    cuda_detail::check(cudaGraphLaunch(recording.graph_, stream()), "cudaGraphLaunch");
   }
 
   // Smallest i in [0, n) with pred(i), or n when there is none.
@@ -237,7 +319,7 @@ class CudaExec {
     if (n == 0 || sweeps <= 0) return;
     if (n <= kOneBlockSweeps) {
       const unsigned threads = static_cast<unsigned>((n + 31) / 32 * 32);
-      cuda_detail::sweeps_in_one_block<<<1, threads>>>(n, sweeps, f);
+      cuda_detail::sweeps_in_one_block<<<1, threads, 0, stream()>>>(n, sweeps, f);
       cuda_detail::check(cudaGetLastError(), "kernel launch");
       return;
     }
@@ -248,6 +330,14 @@ class CudaExec {
 
  private:
   static constexpr std::size_t kOneBlockSweeps = 1024;
+
+  template <class LaneValue>
+  void launch_block_sums(std::size_t blocks, const LaneValue& lane_value, double* out) const {
+    constexpr unsigned kThreads = 256;
+    const unsigned grid = static_cast<unsigned>((blocks * kSumLanes + kThreads - 1) / kThreads);
+    cuda_detail::reduce_blocks_by_warps<double><<<grid, kThreads, 0, stream()>>>(blocks, lane_value, cuda_detail::Add{}, out);
+    cuda_detail::check(cudaGetLastError(), "kernel launch");
+  }
 
   // Launches one warp per block, copies the per-block results to pinned
   // host memory and waits for them; returns the host copy (valid until the
@@ -260,14 +350,15 @@ class CudaExec {
     constexpr unsigned kThreads = 256;
     const std::size_t threads = blocks * kSumLanes;
     const unsigned grid = static_cast<unsigned>((threads + kThreads - 1) / kThreads);
-    cuda_detail::reduce_blocks_by_warps<T><<<grid, kThreads>>>(blocks, lane_value, combine, device);
+    cuda_detail::reduce_blocks_by_warps<T><<<grid, kThreads, 0, stream()>>>(blocks, lane_value, combine, device);
     cuda_detail::check(cudaGetLastError(), "kernel launch");
-    cuda_detail::check(cudaMemcpyAsync(scratch_->host(), device, blocks * sizeof(T), cudaMemcpyDeviceToHost, 0),
+    cuda_detail::check(cudaMemcpyAsync(scratch_->host(), device, blocks * sizeof(T), cudaMemcpyDeviceToHost, stream()),
                        "cudaMemcpyAsync (reduction)");
-    cuda_detail::check(cudaStreamSynchronize(0), "cudaStreamSynchronize (reduction)");
+    cuda_detail::check(cudaStreamSynchronize(stream()), "cudaStreamSynchronize (reduction)");
     return static_cast<const T*>(scratch_->host());
   }
 
+  std::shared_ptr<cuda_detail::Stream> stream_;
   std::shared_ptr<cuda_detail::ReductionScratch> scratch_ = std::make_shared<cuda_detail::ReductionScratch>();
 };
 
