@@ -143,10 +143,6 @@ struct Iota {
   DP_HD void operator()(std::size_t i) const { out[i] = static_cast<std::uint32_t>(i); }
 };
 
-// The pairs that name a cell, for the cells some pair names (the active
-// cells): run r is cell runs.key[r], whose pairs are
-// sorted_pair[runs.begin[r], runs.begin[r + 1]) in surfel order. Cell-side
-// kernels run over these runs, not over the whole grid.
 // A cell's pairs as stretches of consecutive pair indices: stretch s holds
 // pairs first_pair[s] + [0, begin[s + 1] - begin[s]), and cell run r the
 // stretches [run_first[r], run_first[r + 1]).
@@ -176,6 +172,10 @@ struct FirstStretchOfRun {
   }
 };
 
+// The pairs that name a cell, for the cells some pair names (the active
+// cells): run r is cell runs.key[r], whose pairs are
+// sorted_pair[runs.begin[r], runs.begin[r + 1]) in surfel order. Cell-side
+// kernels run over these runs, not over the whole grid.
 template <class Exec>
 struct CellPairIndex {
   template <class T>
@@ -196,9 +196,10 @@ struct CellPairIndex {
   const std::uint32_t* cell() const { return Exec::ptr(runs.key); }
   const std::uint32_t* begin() const { return Exec::ptr(runs.begin); }
 
-  // Static surfels only (texels): corner-major pairs come in stretches
-  // along the atlas rows, a cell's width of texels each, so a cell then
-  // reads its pairs' values in order instead of through one index each.
+  // Static surfels only (texels): corner-major pairs of surfels that share
+  // cells come in stretches (texels ordered by cell: about one per corner),
+  // so a cell reads its pairs' values in order instead of through one
+  // index each.
   void build_stretches(const Exec& exec) {
     stretches_.build_at(exec, sorted_pair, StretchStarts{Exec::ptr(sorted_cell), Exec::ptr(sorted_pair)});
     run_first_stretch_.resize(runs.count + 1);

@@ -22,6 +22,9 @@
 // positive), so a pair keeps one signed amount, PairFlow, and an
 // evaporating texel's loss, which no cell's factor scales, is final in the
 // estimate: only condensing texels wait for their cells' w_c^cond.
+// Texel-side kernels visit the texels in an order of their own (`order`:
+// position -> texel, TexelVaporExchange::order_by_first_cell); pairs and
+// per-texel scratch are kept in that order.
 #include <cstdint>
 
 #include "air/air_grid.h"
@@ -45,7 +48,6 @@ struct TexelExchangeView {
 // one pair, in texel units (each below kMaxTransferUnits).
 using PairFlow = std::int64_t;
 
-DP_HD inline TexelMassUnits evaporation_of(PairFlow f) { return f > 0 ? static_cast<TexelMassUnits>(f) : 0; }
 DP_HD inline TexelMassUnits condensation_of(PairFlow f) { return f < 0 ? static_cast<TexelMassUnits>(-f) : 0; }
 
 // Eq. 11 at each texel's temperature, kept with the temperature it is of:
@@ -114,9 +116,6 @@ DP_HD inline void air_speed_if_needed(const Vec3* cell_velocity, const std::uint
 // nothing. An evaporating texel loses its pairs' sum here (lines 18-20: no
 // cell factor scales evaporation); a condensing one is flagged for
 // UpdateTexelMass.
-// Texel-side kernels run over the texels in an order of their own (`order`:
-// position -> texel, TexelVaporExchange::order_by_first_cell); pairs and
-// per-texel scratch are kept in that order.
 struct EstimateTexelExchange {
   TexelExchangeView texel;
   const std::uint32_t* order;
