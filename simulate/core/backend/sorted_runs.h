@@ -12,10 +12,17 @@
 
 namespace dp {
 
-struct FlagRunStarts {
+// A run of equal keys starts at q.
+struct KeyChanges {
   const std::uint32_t* key;  // sorted
+  DP_HD bool operator()(std::size_t q) const { return q == 0 || key[q] != key[q - 1]; }
+};
+
+template <class StartsAt>
+struct FlagRunStarts {
+  StartsAt starts_at;
   std::uint32_t* start;
-  DP_HD void operator()(std::size_t q) const { start[q] = (q == 0 || key[q] != key[q - 1]) ? 1u : 0u; }
+  DP_HD void operator()(std::size_t q) const { start[q] = starts_at(q) ? 1u : 0u; }
 };
 
 struct ScatterRuns {
@@ -52,14 +59,20 @@ struct SortedRuns {
   Buffer<std::uint32_t> key;       // distinct keys, ascending (count)
   Buffer<std::uint32_t> begin;     // run r is [begin[r], begin[r + 1]) of the sorted array (count + 1)
 
-  void build(const Exec& exec, const Buffer<std::uint32_t>& sorted_key) {
+  void build(const Exec& exec, const Buffer<std::uint32_t>& sorted_key) { build_at(exec, sorted_key, KeyChanges{Exec::ptr(sorted_key)}); }
+
+  // Runs that start wherever starts_at(q) holds (it must at q = 0), each
+  // keyed by its first entry's key: finer runs than equal keys give, such
+  // as stretches of consecutive keys.
+  template <class StartsAt>
+  void build_at(const Exec& exec, const Buffer<std::uint32_t>& sorted_key, const StartsAt& starts_at) {
     const std::size_t n = sorted_key.size();
     count = 0;
     key.resize(0);
     begin.assign(1, 0);
     if (n == 0) return;
     start_.resize(n);
-    exec.parallel_for(n, FlagRunStarts{Exec::ptr(sorted_key), Exec::ptr(start_)});
+    exec.parallel_for(n, FlagRunStarts<StartsAt>{starts_at, Exec::ptr(start_)});
     exec.exclusive_scan(start_, before_);
     count = Exec::download_one(before_, n - 1) + Exec::download_one(start_, n - 1);
     key.resize(count);
@@ -67,6 +80,10 @@ struct SortedRuns {
     exec.parallel_for(n, ScatterRuns{Exec::ptr(sorted_key), Exec::ptr(start_), Exec::ptr(before_), n, Exec::ptr(key),
                                      Exec::ptr(begin)});
   }
+
+  // The number of runs that start before entry q (the run holding a run's
+  // first entry q is runs_before()[q]).
+  const std::uint32_t* runs_before() const { return Exec::ptr(before_); }
 
  private:
   Buffer<std::uint32_t> start_, before_;

@@ -91,6 +91,22 @@ struct ComputeTexelStencils {
   DP_HD void operator()(std::size_t s) const { trilinear_stencil(grid, position[s], pair_cell + s, pair_alpha + s, count); }
 };
 
+// Corner-major stencils of surfels `order[s]` gathered as surfel s's.
+struct PermuteCornerMajor {
+  const std::uint32_t* order;
+  std::size_t count;
+  const std::uint32_t* from_cell;
+  const float* from_alpha;
+  std::uint32_t* cell;
+  float* alpha;
+  DP_HD void operator()(std::size_t s) const {
+    for (int k = 0; k < kStencilSize; ++k) {
+      cell[corner_major_pair(s, k, count)] = from_cell[corner_major_pair(order[s], k, count)];
+      alpha[corner_major_pair(s, k, count)] = from_alpha[corner_major_pair(order[s], k, count)];
+    }
+  }
+};
+
 // A corner-major surfel's eight cells and alphas, gathered.
 DP_HD inline void load_corner_major(const std::uint32_t* pair_cell, const float* pair_alpha, std::size_t t, std::size_t n,
                                     std::uint32_t* cell, float* alpha) {
@@ -127,6 +143,35 @@ struct Iota {
   DP_HD void operator()(std::size_t i) const { out[i] = static_cast<std::uint32_t>(i); }
 };
 
+// A cell's pairs as stretches of consecutive pair indices: stretch s holds
+// pairs first_pair[s] + [0, begin[s + 1] - begin[s]), and cell run r the
+// stretches [run_first[r], run_first[r + 1]).
+struct PairStretches {
+  const std::uint32_t* run_first;   // active cells + 1
+  const std::uint32_t* first_pair;  // per stretch
+  const std::uint32_t* begin;       // per stretch, + 1: its first entry in cell order
+};
+
+// A stretch starts at a cell's first pair and wherever the next pair of the
+// same cell is not the one after the last.
+struct StretchStarts {
+  const std::uint32_t* sorted_cell;
+  const std::uint32_t* sorted_pair;
+  DP_HD bool operator()(std::size_t q) const {
+    return q == 0 || sorted_cell[q] != sorted_cell[q - 1] || sorted_pair[q] != sorted_pair[q - 1] + 1;
+  }
+};
+
+struct FirstStretchOfRun {
+  const std::uint32_t* run_begin;        // active cells + 1
+  const std::uint32_t* stretches_before;  // per entry in cell order
+  std::size_t cells, stretches;
+  std::uint32_t* run_first;
+  DP_HD void operator()(std::size_t r) const {
+    run_first[r] = r < cells ? stretches_before[run_begin[r]] : static_cast<std::uint32_t>(stretches);
+  }
+};
+
 // The pairs that name a cell, for the cells some pair names (the active
 // cells): run r is cell runs.key[r], whose pairs are
 // sorted_pair[runs.begin[r], runs.begin[r + 1]) in surfel order. Cell-side
@@ -150,6 +195,24 @@ struct CellPairIndex {
   std::size_t active_cells() const { return runs.count; }
   const std::uint32_t* cell() const { return Exec::ptr(runs.key); }
   const std::uint32_t* begin() const { return Exec::ptr(runs.begin); }
+
+  // Static surfels only (texels): corner-major pairs of surfels that share
+  // cells come in stretches (texels ordered by cell: about one per corner),
+  // so a cell reads its pairs' values in order instead of through one
+  // index each.
+  void build_stretches(const Exec& exec) {
+    stretches_.build_at(exec, sorted_pair, StretchStarts{Exec::ptr(sorted_cell), Exec::ptr(sorted_pair)});
+    run_first_stretch_.resize(runs.count + 1);
+    exec.parallel_for(runs.count + 1, FirstStretchOfRun{Exec::ptr(runs.begin), stretches_.runs_before(), runs.count, stretches_.count,
+                                                        Exec::ptr(run_first_stretch_)});
+  }
+  PairStretches stretches() const {
+    return PairStretches{Exec::ptr(run_first_stretch_), Exec::ptr(stretches_.key), Exec::ptr(stretches_.begin)};
+  }
+
+ private:
+  SortedRuns<Exec> stretches_;
+  Buffer<std::uint32_t> run_first_stretch_;
 };
 
 // Sets out[c] = value for each listed cell c (clearing what an earlier

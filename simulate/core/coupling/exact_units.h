@@ -18,7 +18,8 @@ inline constexpr double kMaxTransferUnits = 4.6116860184273879e18;
 DP_HD inline TexelMassUnits transfer_units_of_kg(double kg, double kg_per_unit) {
   const double u = kg / kg_per_unit;
   if (!(u > 0)) return 0;
-  return static_cast<TexelMassUnits>(u < kMaxTransferUnits ? u : kMaxTransferUnits);
+  // Below 2^63: the signed conversion gives the same integer, in one instruction.
+  return static_cast<TexelMassUnits>(static_cast<std::int64_t>(u < kMaxTransferUnits ? u : kMaxTransferUnits));
 }
 
 // floor(x * num / den) exactly, for num <= den: the scaled transfers of

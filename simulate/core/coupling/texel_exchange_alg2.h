@@ -8,14 +8,23 @@
 // by the texel and by the cell: the texels lose exactly what the cells gain.
 //
 // Kernels, in the order they run:
-//   EstimateTexelExchange   lines 1-14 (estimate, then w_t^eva, w_t^cond), per texel
+//   EstimateTexelExchange   lines 1-14 (estimate, then w_t^eva, w_t^cond), per
+//                           texel, and lines 18-20 for an evaporating texel
 //   BalanceCellCondensation lines 15-17 (w_c^cond as num / den) and 21-23
 //                           (the cell's net gain), per active cell: the cell
 //                           scales its own pairs' condensation by its own w_c^cond
-//   UpdateTexelMass         lines 18-20, per texel, the same scaled amounts
+//   UpdateTexelMass         lines 18-20 for a condensing texel, the same scaled amounts
 //   UpdateCellVapor         lines 21-23 without condensation (particles)
 // Cell-side kernels run over the cells some pair names (CellPairIndex's
 // runs), writing whole-grid arrays only there.
+//
+// A texel either evaporates or condenses (Eq. 16 and 17 cannot both be
+// positive), so a pair keeps one signed amount, PairFlow, and an
+// evaporating texel's loss, which no cell's factor scales, is final in the
+// estimate: only condensing texels wait for their cells' w_c^cond.
+// Texel-side kernels visit the texels in an order of their own (`order`:
+// position -> texel, TexelVaporExchange::order_by_first_cell); pairs and
+// per-texel scratch are kept in that order.
 #include <cstdint>
 
 #include "air/air_grid.h"
@@ -33,6 +42,27 @@ struct TexelExchangeView {
   const float* wetting;        // wetting history, [0, 1]
   const TexelMassUnits* max_mass;
   TexelMassUnits* mass;
+};
+
+// m^eva_{c<-t} (> 0, to the cell) or -m^cond_{t<-c} (< 0, to the texel) of
+// one pair, in texel units (each below kMaxTransferUnits).
+using PairFlow = std::int64_t;
+
+DP_HD inline TexelMassUnits condensation_of(PairFlow f) { return f < 0 ? static_cast<TexelMassUnits>(-f) : 0; }
+
+// Eq. 11 at each texel's temperature, kept with the temperature it is of:
+// texel temperatures change only with the rigids' (held rigids never), and
+// the same float gives the same pressure, so the exp is taken again only
+// for a texel whose temperature changed.
+struct SaturationPressureCache {
+  float* kelvin;    // NaN: none yet
+  double* pressure;  // Pa
+  DP_HD double at(std::size_t t, float temperature) const {
+    if (kelvin[t] == temperature) return pressure[t];
+    kelvin[t] = temperature;
+    pressure[t] = saturation_pressure_at_kelvin(temperature);
+    return pressure[t];
+  }
 };
 
 struct ExchangeParameters {
@@ -59,10 +89,17 @@ DP_HD inline AirAtSurfel air_at_stencil(const AirCellsView& air, const std::uint
 // (Eq. 17 drops it) from a surfel that has water. It is the trilinear
 // interpolation of the cell-centred velocities (as for the other cell
 // quantities, Sec. 6.1) over the surfel's stencil weights.
+// (Per component: the same sums as Vec3's operators, which the compiler
+// otherwise keeps packing and unpacking.)
 DP_HD inline double stencil_speed(const Vec3* cell_velocity, const std::uint32_t* cell, const float* w, float wsum) {
-  Vec3 v{0, 0, 0};
-  for (int k = 0; k < kStencilSize; ++k) v = v + w[k] * cell_velocity[cell[k]];
-  return static_cast<double>(length(v)) / wsum;
+  float x = 0, y = 0, z = 0;
+  for (int k = 0; k < kStencilSize; ++k) {
+    const Vec3 c = cell_velocity[cell[k]];
+    x = x + w[k] * c.x;
+    y = y + w[k] * c.y;
+    z = z + w[k] * c.z;
+  }
+  return static_cast<double>(length(Vec3{x, y, z})) / wsum;
 }
 
 DP_HD inline void air_speed_if_needed(const Vec3* cell_velocity, const std::uint32_t* cell, const float* w, float wsum, double b,
@@ -76,59 +113,75 @@ DP_HD inline void air_speed_if_needed(const Vec3* cell_velocity, const std::uint
 // balance factor of 0 (no water: w_t^eva; no room or recently wet: no
 // condensation) zeroes a side exactly, so a texel computes only the side
 // that can move water, and a dry texel that may not condense computes
-// nothing.
+// nothing. An evaporating texel loses its pairs' sum here (lines 18-20: no
+// cell factor scales evaporation); a condensing one is flagged for
+// UpdateTexelMass.
 struct EstimateTexelExchange {
   TexelExchangeView texel;
+  const std::uint32_t* order;
   AirCellsView air;
   const Vec3* cell_velocity;  // cell-centred, this step
   const std::uint32_t* pair_cell;  // corner-major (cell_stencil.h)
   const float* pair_alpha;
   std::size_t count;               // texels
   ExchangeParameters p;
-  TexelMassUnits* pair_eva;   // m^eva_{c<-t}
-  TexelMassUnits* pair_cond;  // m^cond_{t<-c}
+  SaturationPressureCache saturation;
+  PairFlow* pair_flow;
+  std::uint8_t* condensing;  // per texel: some pair gives it water
 
   DP_HD void operator()(std::size_t t) const {
-    std::uint32_t cell[kStencilSize];
-    float alpha[kStencilSize];
-    TexelMassUnits eva[kStencilSize], cond[kStencilSize];
-    const TexelMassUnits m = texel.mass[t], cap = texel.max_mass[t];
+    const std::uint32_t x = order[t];
+    const TexelMassUnits m = texel.mass[x], cap = texel.max_mass[x];
     const TexelMassUnits room = cap > m ? cap - m : 0;
-    const bool may_condense = room > 0 && texel.wetting[t] < p.wet_threshold;
+    const bool may_condense = room > 0 && texel.wetting[x] < p.wet_threshold;
+    std::uint32_t cell[kStencilSize];
     float w[kStencilSize];
     float wsum = 0;
-    double eva_kg = 0, cond_kg = 0;
-    load_corner_major(pair_cell, pair_alpha, t, count, cell, alpha);
-    if (m > 0 || may_condense) wsum = air_weights(air.kind, cell, alpha, w);
-    if (wsum > 0) {
-      const AirAtSurfel a = air_at_stencil(air, cell, w, wsum);
-      const double p_sat = saturation_pressure_at_kelvin(texel.temperature[t]);  // Eq. 11
-      const double p_c = vapor_pressure(a.vapor_density, a.temperature);         // Eq. 10
-      if (p_sat > p_c) {
-        if (m > 0) {
-          const double speed = p.coefficients.b > 0 ? stencil_speed(cell_velocity, cell, w, wsum) : 0.0;
-          eva_kg = evaporation_rate_at(texel.area[t], p.coefficients, speed, p_sat, p_c) * p.dt;  // Eq. 16
-        }
-      } else if (may_condense) {
-        cond_kg = condensation_rate_at(texel.area[t], p.coefficients, p_sat, p_c) * p.dt;  // Eq. 17
+    // Eq. 16 (> 0) or Eq. 17 (< 0) times dt: at most one side is non-zero.
+    double kg = 0;
+    if (m > 0 || may_condense) {
+      float alpha[kStencilSize];
+      load_corner_major(pair_cell, pair_alpha, t, count, cell, alpha);
+      wsum = air_weights(air.kind, cell, alpha, w);
+      if (wsum > 0) kg = signed_exchange_kg(t, x, cell, w, wsum, m > 0, may_condense);
+    }
+    // The pairs' shares, each rounded down, then w_t^eva or w_t^cond.
+    TexelMassUnits units[kStencilSize];
+    TexelMassUnits sum = 0;
+    const double amount = kg > 0 ? kg : -kg;
+    for (int k = 0; k < kStencilSize; ++k) {
+      units[k] = kg != 0 ? transfer_units_of_kg(amount * static_cast<double>(w[k] / wsum), p.kg_per_unit) : 0;
+      sum += units[k];
+    }
+    const TexelMassUnits bound = kg > 0 ? m : room;
+    if (sum > bound) {
+      TexelMassUnits scaled = 0;
+      for (int k = 0; k < kStencilSize; ++k) {
+        units[k] = scale_units(units[k], bound, sum);  // w_t^eva = min(m_t / sum eva, 1), w_t^cond = min((m_t^max - m_t) / sum cond, 1)
+        scaled += units[k];
       }
+      sum = scaled;
     }
-    TexelMassUnits eva_sum = 0, cond_sum = 0;
-    for (int k = 0; k < kStencilSize; ++k) {
-      const double share = eva_kg > 0 || cond_kg > 0 ? w[k] / wsum : 0.0;
-      eva[k] = eva_kg > 0 ? transfer_units_of_kg(eva_kg * share, p.kg_per_unit) : 0;
-      cond[k] = cond_kg > 0 ? transfer_units_of_kg(cond_kg * share, p.kg_per_unit) : 0;
-      eva_sum += eva[k];
-      cond_sum += cond[k];
+    for (int k = 0; k < kStencilSize; ++k)
+      pair_flow[corner_major_pair(t, k, count)] = kg > 0 ? static_cast<PairFlow>(units[k]) : -static_cast<PairFlow>(units[k]);
+    if (kg > 0 && sum > 0) texel.mass[x] = m - sum;  // sum <= m_t by w_t^eva
+    condensing[t] = kg < 0 && sum > 0;
+  }
+
+  // Texel x's (at position t) Eq. 16 rate (positive) or minus its Eq. 17
+  // rate, times dt, kg; 0 when the side the pressures pick cannot move water.
+  DP_HD double signed_exchange_kg(std::size_t t, std::uint32_t x, const std::uint32_t* cell, const float* w, float wsum, bool has_water,
+                                  bool may_condense) const {
+    const AirAtSurfel a = air_at_stencil(air, cell, w, wsum);
+    const double p_sat = saturation.at(t, texel.temperature[x]);        // Eq. 11
+    const double p_c = vapor_pressure(a.vapor_density, a.temperature);  // Eq. 10
+    if (p_sat > p_c) {
+      if (!has_water) return 0;
+      const double speed = p.coefficients.b > 0 ? stencil_speed(cell_velocity, cell, w, wsum) : 0.0;
+      return evaporation_rate_at(texel.area[x], p.coefficients, speed, p_sat, p_c) * p.dt;  // Eq. 16
     }
-    if (eva_sum > m)
-      for (int k = 0; k < kStencilSize; ++k) eva[k] = scale_units(eva[k], m, eva_sum);  // w_t^eva = min(m_t / sum eva, 1)
-    if (cond_sum > room)
-      for (int k = 0; k < kStencilSize; ++k) cond[k] = scale_units(cond[k], room, cond_sum);  // w_t^cond = min((m_t^max - m_t) / sum cond, 1)
-    for (int k = 0; k < kStencilSize; ++k) {
-      pair_eva[corner_major_pair(t, k, count)] = eva[k];
-      pair_cond[corner_major_pair(t, k, count)] = cond[k];
-    }
+    if (!may_condense) return 0;
+    return -(condensation_rate_at(texel.area[x], p.coefficients, p_sat, p_c) * p.dt);  // Eq. 17
   }
 };
 
@@ -143,13 +196,12 @@ DP_HD inline TexelMassUnits cell_vapor_units(double density, double cell_volume,
 // keeps a margin (the cell ends with at least twice that evaporation).
 // Then lines 21-23 for the cell: its net gain, evaporation in minus its
 // pairs' condensation scaled by w_c^cond, the same amounts UpdateTexelMass
-// gives the texels.
+// gives the texels. The cell reads its pairs by stretches of consecutive
+// pairs (CellPairIndex::build_stretches).
 struct BalanceCellCondensation {
-  const std::uint32_t* cell;         // the runs' cells
-  const std::uint32_t* begin;        // the runs' first sorted pairs
-  const std::uint32_t* sorted_pair;
-  const TexelMassUnits* pair_eva;
-  const TexelMassUnits* pair_cond;
+  const std::uint32_t* cell;  // the runs' cells
+  PairStretches pairs;
+  const PairFlow* pair_flow;
   const double* vapor;  // kg/m^3
   double cell_volume;
   double kg_per_unit;
@@ -160,11 +212,25 @@ struct BalanceCellCondensation {
 
   DP_HD void operator()(std::size_t r) const {
     const std::uint32_t c = cell[r];
-    TexelMassUnits e = 0, d = 0;
-    for (std::uint32_t q = begin[r]; q < begin[r + 1]; ++q) {
-      e += pair_eva[sorted_pair[q]];
-      d += pair_cond[sorted_pair[q]];
+    // sum eva - sum cond over the pairs, and whether any pair condenses;
+    // only then sum cond on its own (unsigned sums wrap alike in any order,
+    // so e = flow + d exactly).
+    TexelMassUnits flow = 0;
+    PairFlow any = 0;
+    for (std::uint32_t s = pairs.run_first[r]; s < pairs.run_first[r + 1]; ++s) {
+      const PairFlow* f = pair_flow + pairs.first_pair[s];
+      for (std::uint32_t i = 0, n = pairs.begin[s + 1] - pairs.begin[s]; i < n; ++i) {
+        flow += static_cast<TexelMassUnits>(f[i]);
+        any |= f[i];
+      }
     }
+    TexelMassUnits d = 0;
+    if (any < 0)
+      for (std::uint32_t s = pairs.run_first[r]; s < pairs.run_first[r + 1]; ++s) {
+        const PairFlow* f = pair_flow + pairs.first_pair[s];
+        for (std::uint32_t i = 0, n = pairs.begin[s + 1] - pairs.begin[s]; i < n; ++i) d += condensation_of(f[i]);
+      }
+    const TexelMassUnits e = flow + d;
     const TexelMassUnits m = cell_vapor_units(vapor[c], cell_volume, kg_per_unit);
     const TexelMassUnits avail = m > e ? m - e : 0;
     const TexelMassUnits num = avail < d ? avail : d;
@@ -172,34 +238,40 @@ struct BalanceCellCondensation {
     cond_den[c] = d;
     TexelMassUnits out = 0;
     if (d > 0)
-      for (std::uint32_t q = begin[r]; q < begin[r + 1]; ++q) out += scale_units(pair_cond[sorted_pair[q]], num, d);
+      for (std::uint32_t s = pairs.run_first[r]; s < pairs.run_first[r + 1]; ++s) {
+        const PairFlow* f = pair_flow + pairs.first_pair[s];
+        for (std::uint32_t i = 0, n = pairs.begin[s + 1] - pairs.begin[s]; i < n; ++i) out += scale_units(condensation_of(f[i]), num, d);
+      }
     const std::int64_t net = static_cast<std::int64_t>(e) - static_cast<std::int64_t>(out);
     net_units[r] = net;
     vapor_kg[c] = static_cast<double>(net) * kg_per_unit;
   }
 };
 
-// Alg. 2 lines 18-20: m_t += sum_c (cond w_c^cond - eva), with the cell's
-// w_c^cond from BalanceCellCondensation.
+// Alg. 2 lines 18-20 for a condensing texel: m_t += sum_c cond w_c^cond,
+// with the cell's w_c^cond from BalanceCellCondensation (it has no
+// evaporation: EstimateTexelExchange).
 struct UpdateTexelMass {
+  const std::uint32_t* order;      // position -> texel
   const std::uint32_t* pair_cell;  // corner-major
   std::size_t count;               // texels
-  const TexelMassUnits* pair_eva;
+  const PairFlow* pair_flow;
+  const std::uint8_t* condensing;
   const TexelMassUnits* cond_num;
   const TexelMassUnits* cond_den;
-  const TexelMassUnits* pair_cond;
   TexelMassUnits* mass;
 
   DP_HD void operator()(std::size_t t) const {
-    TexelMassUnits gain = 0, loss = 0;
+    if (!condensing[t]) return;
+    TexelMassUnits gain = 0;
     for (int k = 0; k < kStencilSize; ++k) {
       const std::size_t q = corner_major_pair(t, k, count);
-      loss += pair_eva[q];
-      if (pair_cond[q] == 0) continue;
+      const TexelMassUnits cond = condensation_of(pair_flow[q]);
+      if (cond == 0) continue;
       const std::uint32_t c = pair_cell[q];
-      gain += scale_units(pair_cond[q], cond_num[c], cond_den[c]);
+      gain += scale_units(cond, cond_num[c], cond_den[c]);
     }
-    mass[t] = mass[t] + gain - loss;  // loss <= m_t and m_t + gain <= max(m_t, m_t^max) by the balance
+    mass[order[t]] += gain;  // m_t + gain <= max(m_t, m_t^max) by the balance
   }
 };
 

@@ -4,6 +4,7 @@
 // textures are static, Sec. 4.4), and each step the four phases of
 // texel_exchange_alg2.h, the cells' vapor change handed to the air grid.
 #include <cstdint>
+#include <limits>
 
 #include "air/air_grid.h"
 #include "coupling/cell_stencil.h"
@@ -23,17 +24,26 @@ class TexelVaporExchange {
   void prepare(const Exec& exec, const MacGrid& grid, const Buffer<Vec3>& texel_position, const Buffer<Vec3>& texel_normal = {}) {
     texels_ = texel_position.size();
     const std::size_t pairs = kStencilSize * texels_;
+    Buffer<std::uint32_t> atlas_cell(pairs);
+    Buffer<float> atlas_alpha(pairs);
+    if (texel_normal.size() == texels_)
+      exec.parallel_for(texels_, ComputeStencilsInFront{grid, Exec::ptr(texel_position), Exec::ptr(texel_normal), Exec::ptr(atlas_cell),
+                                                        Exec::ptr(atlas_alpha), texels_});
+    else
+      exec.parallel_for(texels_, ComputeTexelStencils{grid, Exec::ptr(texel_position), Exec::ptr(atlas_cell), Exec::ptr(atlas_alpha),
+                                                      texels_});
+    order_by_first_cell(exec, atlas_cell);
     pair_cell_.resize(pairs);
     pair_alpha_.resize(pairs);
-    pair_eva_.resize(pairs);
-    pair_cond_.resize(pairs);
-    if (texel_normal.size() == texels_)
-      exec.parallel_for(texels_, ComputeStencilsInFront{grid, Exec::ptr(texel_position), Exec::ptr(texel_normal), Exec::ptr(pair_cell_),
-                                                        Exec::ptr(pair_alpha_), texels_});
-    else
-      exec.parallel_for(texels_, ComputeTexelStencils{grid, Exec::ptr(texel_position), Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_),
-                                                      texels_});
+    if (texels_ > 0)
+      exec.parallel_for(texels_, PermuteCornerMajor{Exec::ptr(order_), texels_, Exec::ptr(atlas_cell), Exec::ptr(atlas_alpha),
+                                                    Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_)});
+    pair_flow_.resize(pairs);
+    condensing_.resize(texels_);
+    saturation_kelvin_.assign(texels_, std::numeric_limits<float>::quiet_NaN());
+    saturation_pressure_.resize(texels_);
     cells_.build(exec, pair_cell_);
+    cells_.build_stretches(exec);
     for (auto* b : {&cond_num_, &cond_den_}) b->resize(grid.cell_count());
     net_units_.resize(cells_.active_cells());
     // Written only at the active cells, which never change: the rest stays 0.
@@ -52,23 +62,42 @@ class TexelVaporExchange {
     const MacGrid& g = air.grid();
     const std::size_t active = cells_.active_cells();
     const AirCellsView view = air.view();
-    exec.parallel_for(texels_, EstimateTexelExchange{texel, view, cell_velocity, Exec::ptr(pair_cell_), Exec::ptr(pair_alpha_), texels_, p,
-                                                     Exec::ptr(pair_eva_), Exec::ptr(pair_cond_)});
-    exec.parallel_for(active, BalanceCellCondensation{cells_.cell(), cells_.begin(), Exec::ptr(cells_.sorted_pair), Exec::ptr(pair_eva_),
-                                                      Exec::ptr(pair_cond_), view.vapor, static_cast<double>(g.cell_volume()),
-                                                      p.kg_per_unit, Exec::ptr(cond_num_), Exec::ptr(cond_den_),
-                                                      Exec::ptr(net_units_), Exec::ptr(vapor_kg_)});
-    exec.parallel_for(texels_, UpdateTexelMass{Exec::ptr(pair_cell_), texels_, Exec::ptr(pair_eva_), Exec::ptr(cond_num_),
-                                               Exec::ptr(cond_den_), Exec::ptr(pair_cond_), texel.mass});
+    const SaturationPressureCache saturation{Exec::ptr(saturation_kelvin_), Exec::ptr(saturation_pressure_)};
+    exec.parallel_for(texels_, EstimateTexelExchange{texel, Exec::ptr(order_), view, cell_velocity, Exec::ptr(pair_cell_),
+                                                     Exec::ptr(pair_alpha_), texels_, p, saturation, Exec::ptr(pair_flow_),
+                                                     Exec::ptr(condensing_)});
+    exec.parallel_for(active, BalanceCellCondensation{cells_.cell(), cells_.stretches(), Exec::ptr(pair_flow_), view.vapor,
+                                                      static_cast<double>(g.cell_volume()), p.kg_per_unit, Exec::ptr(cond_num_),
+                                                      Exec::ptr(cond_den_), Exec::ptr(net_units_), Exec::ptr(vapor_kg_)});
+    exec.parallel_for(texels_, UpdateTexelMass{Exec::ptr(order_), Exec::ptr(pair_cell_), texels_, Exec::ptr(pair_flow_),
+                                               Exec::ptr(condensing_), Exec::ptr(cond_num_), Exec::ptr(cond_den_), texel.mass});
     air.add_cell_sources(exec, Exec::ptr(vapor_kg_), nullptr);
     return exact_units_sum(exec, active, Exec::ptr(net_units_));
   }
 
  private:
+  // The exchange visits the texels in the order of their stencils' first
+  // cell (stable: atlas order within a cell): texels sharing all eight
+  // cells are neighbours, so each cell's pairs form a few long stretches
+  // (about one per corner) instead of one per atlas row. Results do not
+  // depend on it: texels are independent and cells sum integers.
+  void order_by_first_cell(const Exec& exec, const Buffer<std::uint32_t>& atlas_cell) {
+    Buffer<std::uint32_t> first_cell(atlas_cell.begin(), atlas_cell.begin() + static_cast<std::ptrdiff_t>(texels_));  // corner 0
+    order_.resize(texels_);
+    if (texels_ == 0) return;
+    exec.parallel_for(texels_, Iota{Exec::ptr(order_)});
+    exec.sort_by_key(first_cell, order_);
+  }
+
   std::size_t texels_ = 0;
+  Buffer<std::uint32_t> order_;  // exchange order -> texel (order_by_first_cell)
   Buffer<std::uint32_t> pair_cell_;
   Buffer<float> pair_alpha_;
-  Buffer<TexelMassUnits> pair_eva_, pair_cond_, cond_num_, cond_den_;
+  Buffer<PairFlow> pair_flow_;
+  Buffer<std::uint8_t> condensing_;  // per texel
+  Buffer<float> saturation_kelvin_;  // SaturationPressureCache
+  Buffer<double> saturation_pressure_;
+  Buffer<TexelMassUnits> cond_num_, cond_den_;
   Buffer<std::int64_t> net_units_;  // per active cell
   Buffer<double> vapor_kg_;         // per grid cell
   CellPairIndex<Exec> cells_;
