@@ -115,11 +115,19 @@ struct RigidWalls::Search {
   const RigidWalls& walls;
   Vec3d x;
   WallPoint best;
+  int last_rigid = -1;
+  unsigned last_triangle = 0;
 
   // Takes triangle `triangle` of rigid `rigid` if its closest point beats
   // the best so far: closer, or as close with a lower (rigid, triangle) id,
   // so the answer does not depend on the order of the offers.
   bool offer(int rigid, unsigned triangle) {
+    // Pieces of one triangle often meet the sphere one after another, and
+    // the best triangle's pieces keep meeting it: a triangle offered again
+    // cannot change the best.
+    if (rigid == last_rigid && triangle == last_triangle) return false;
+    last_rigid = rigid, last_triangle = triangle;
+    if (best.found && rigid == best.rigid && triangle == best.triangle) return false;
     const Rigid& r = walls.rigids_[std::size_t(rigid)];
     const auto& [a, b, c] = r.corners[triangle];
     const Vec3d q = closest_point_on_triangle(x, a, b, c);
