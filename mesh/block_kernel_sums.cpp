@@ -52,9 +52,11 @@ inline void add_velocity_to_row(double* vx, double* vy, double* vz, const double
 
 // The hot loop of the mesher; built for AVX2 as well where the CPU has it
 // (chosen at load time), the portable build stays the default.
+// The velocity sums are added row by row on their own, so gathering them in
+// a later pass gives the same bits as gathering them with the rest.
 __attribute__((target_clones("avx2", "default"))) void gather_into(
     BlockKernelSums& sums, Vec3d origin, double h, const LiquidParticles& p, const std::vector<std::uint32_t>& near,
-    double kernel_radius, bool with_velocity) {
+    double kernel_radius, bool with_positions, bool with_velocity) {
   const double r2 = kernel_radius * kernel_radius, inverse_r2 = 1 / r2;
   for (std::uint32_t i : near) {
     // In block coordinates, so that offsets do not cancel large world coordinates.
@@ -73,9 +75,10 @@ __attribute__((target_clones("avx2", "default"))) void gather_into(
         const double dy = local.y - h * j, dyz2 = dy * dy + dz2;
         if (dyz2 >= r2) continue;
         const std::size_t row = sums.node(0, j, k);
-        add_to_row({sums.weight.data() + row, sums.offset_x.data() + row, sums.offset_y.data() + row,
-                    sums.offset_z.data() + row, sums.radius.data() + row},
-                   dx, dyz2, dy, dz, p.radius[i], inverse_r2);
+        if (with_positions)
+          add_to_row({sums.weight.data() + row, sums.offset_x.data() + row, sums.offset_y.data() + row,
+                      sums.offset_z.data() + row, sums.radius.data() + row},
+                     dx, dyz2, dy, dz, p.radius[i], inverse_r2);
         if (with_velocity)
           add_velocity_to_row(sums.velocity_x.data() + row, sums.velocity_y.data() + row,
                               sums.velocity_z.data() + row, dx, dyz2, p.velocity[i], inverse_r2);
@@ -87,17 +90,20 @@ __attribute__((target_clones("avx2", "default"))) void gather_into(
 }  // namespace
 
 BlockKernelSums gather_block_kernel_sums(Vec3d origin, int ny, int nz, double voxel_size, const LiquidParticles& p,
-                                         const std::vector<std::uint32_t>& near, double kernel_radius,
-                                         bool with_velocity) {
+                                         const std::vector<std::uint32_t>& near, double kernel_radius) {
   BlockKernelSums sums;
   sums.ny = ny, sums.nz = nz;
   const std::size_t count = std::size_t(kFieldBlock) * ny * nz;
   for (auto* v : {&sums.weight, &sums.offset_x, &sums.offset_y, &sums.offset_z, &sums.radius}) v->assign(count, 0.0);
-  with_velocity = with_velocity && !p.velocity.empty();
-  if (with_velocity)
-    for (auto* v : {&sums.velocity_x, &sums.velocity_y, &sums.velocity_z}) v->assign(count, 0.0);
-  gather_into(sums, origin, voxel_size, p, near, kernel_radius, with_velocity);
+  gather_into(sums, origin, voxel_size, p, near, kernel_radius, true, false);
   return sums;
+}
+
+void add_block_velocity_sums(BlockKernelSums& sums, Vec3d origin, double voxel_size, const LiquidParticles& p,
+                             const std::vector<std::uint32_t>& near, double kernel_radius) {
+  if (p.velocity.empty() || !sums.velocity_x.empty()) return;
+  for (auto* v : {&sums.velocity_x, &sums.velocity_y, &sums.velocity_z}) v->assign(sums.weight.size(), 0.0);
+  gather_into(sums, origin, voxel_size, p, near, kernel_radius, false, true);
 }
 
 }  // namespace dp::mesh

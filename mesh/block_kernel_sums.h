@@ -24,10 +24,15 @@ struct BlockKernelSums {
 };
 
 // Sums over `near` (in that order) at the nodes origin + voxel_size * (i, j, k),
-// 0 <= j < ny, 0 <= k < nz, 0 <= i < kFieldBlock. Velocities only when asked
-// for and the particles have them.
+// 0 <= j < ny, 0 <= k < nz, 0 <= i < kFieldBlock, velocities left out (most
+// blocks never need them).
 BlockKernelSums gather_block_kernel_sums(Vec3d origin, int ny, int nz, double voxel_size, const LiquidParticles& p,
-                                         const std::vector<std::uint32_t>& near, double kernel_radius,
-                                         bool with_velocity);
+                                         const std::vector<std::uint32_t>& near, double kernel_radius);
+
+// Adds the velocity sums to `sums`, gathered with the same arguments, where
+// the particles have velocities; each row's velocity sums are accumulated
+// on their own, in the same order, so they do not depend on when.
+void add_block_velocity_sums(BlockKernelSums& sums, Vec3d origin, double voxel_size, const LiquidParticles& p,
+                             const std::vector<std::uint32_t>& near, double kernel_radius);
 
 }  // namespace dp::mesh

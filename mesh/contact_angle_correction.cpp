@@ -18,16 +18,20 @@ ContactAngleCorrection_HochstetterKolb2017::ContactAngleCorrection_HochstetterKo
   for (const auto& p : settings_.per_rigid) angles_.emplace_back(p);
 }
 
-double ContactAngleCorrection_HochstetterKolb2017::distance(Vec3d x, const LocalFluid& f, double phi0,
-                                                            CorrectionCounts& counts) const {
-  if (!f.near_liquid || !may_change_sign(phi0, f.mean_radius)) return phi0;
+WallPoint ContactAngleCorrection_HochstetterKolb2017::fluid_wall(Vec3d x, const LocalFluid& f, double phi0,
+                                                                 CorrectionCounts& counts, const WallPoint& hint) const {
+  if (!f.near_liquid || !may_change_sign(phi0, f.mean_radius)) return {};
   ++counts.considered;
+  ++counts.wall_queries;
+  return walls_.closest(x + f.mean_offset, settings_.reach_factor * f.mean_radius, &hint);
+}
+
+double ContactAngleCorrection_HochstetterKolb2017::corrected_distance(Vec3d x, const LocalFluid& f,
+                                                                      const WallPoint& fluid_wall,
+                                                                      CorrectionCounts& counts) const {
+  ++counts.corrected;
   const double rbar = f.mean_radius;
   const Vec3d xbar = x + f.mean_offset;
-  ++counts.wall_queries;
-  const WallPoint fluid_wall = walls_.closest(xbar, settings_.reach_factor * rbar);
-  if (!fluid_wall.found) return phi0;
-  ++counts.corrected;
 
   // The wall's normal at xbar_p, facing the fluid: a thin wall may have
   // fluid on either side, whichever way its triangles turn.
@@ -39,7 +43,7 @@ double ContactAngleCorrection_HochstetterKolb2017::distance(Vec3d x, const Local
   // point is at least as close as xbar_p, which bounds the search.
   ++counts.wall_queries;
   const double x_reach = length(x - xbar_p) * (1 + 1e-9) + 1e-12;
-  const WallPoint point_wall = walls_.closest(x, x_reach);
+  const WallPoint point_wall = walls_.closest(x, x_reach, &fluid_wall);
   const Vec3d x_p = point_wall.found ? point_wall.point : xbar_p;
   const double wall_distance = point_wall.found ? point_wall.distance : length(x - xbar_p);
 

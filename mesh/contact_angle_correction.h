@@ -46,10 +46,17 @@ class ContactAngleCorrection_HochstetterKolb2017 {
   // Keeps a reference to `walls`, which must outlive the correction.
   ContactAngleCorrection_HochstetterKolb2017(const RigidWalls& walls, ContactAngleSettings settings);
 
-  // phi at x after both corrections, from the local averages f and the
-  // uncorrected phi0 = |x - xbar| - rbar of Eq. 19; phi0 itself where no
-  // wall is within reach of xbar.
-  double distance(Vec3d x, const LocalFluid& f, double phi0, CorrectionCounts& counts) const;
+  // The wall point xbar_p within reach of the fluid's mean position xbar
+  // at x, from the local averages f and the uncorrected phi0 = |x - xbar| -
+  // rbar of Eq. 19; found = false where no wall is within reach or where no
+  // correction can change the sign of phi (phi0 then stands). `hint`, a
+  // wall point found at a nearby node, only speeds up the search.
+  WallPoint fluid_wall(Vec3d x, const LocalFluid& f, double phi0, CorrectionCounts& counts,
+                       const WallPoint& hint) const;
+
+  // phi at x after both corrections, where fluid_wall() found xbar_p; only
+  // here is f's mean velocity needed.
+  double corrected_distance(Vec3d x, const LocalFluid& f, const WallPoint& fluid_wall, CorrectionCounts& counts) const;
 
   // Whether any correction can change the sign of phi at a node with this
   // phi0 and rbar. Outside this band the corrections are skipped: the sign
@@ -65,7 +72,7 @@ class ContactAngleCorrection_HochstetterKolb2017 {
   // Whether a wall can be within reach of xbar, given a lower bound of
   // xbar's distance to every wall (the walls' distance is 1-Lipschitz, so a
   // distance known at one point bounds it at xbar). Only then can the
-  // query in distance() find a wall: skipping the rest changes nothing.
+  // query in fluid_wall() find a wall: skipping the rest changes nothing.
   bool wall_within_reach(double xbar_wall_gap, double rbar) const {
     return xbar_wall_gap < (settings_.reach_factor + 1e-6) * rbar;  // the margin covers rounding
   }

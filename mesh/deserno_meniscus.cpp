@@ -6,14 +6,18 @@
 namespace dp::mesh {
 
 DesernoMeniscus2004::DesernoMeniscus2004(double psi0, double capillary_length)
-    : psi0_(psi0), l_(capillary_length), cos_half_(std::cos(psi0 / 2)), sin_half_(std::sin(psi0 / 2)) {
+    : psi0_(psi0),
+      l_(capillary_length),
+      cos_half_(std::cos(psi0 / 2)),
+      sin_half_(std::sin(psi0 / 2)),
+      cos_(std::cos(psi0)) {
   if (!(std::abs(psi0) < M_PI / 2)) throw std::invalid_argument("Deserno meniscus: |psi0| must be below 90 degrees");
   if (!(capillary_length > 0)) throw std::invalid_argument("Deserno meniscus: capillary length must be positive");
 }
 
 double DesernoMeniscus2004::x(double s) const {
   const double t = s / l_, c = std::cosh(t), sh = std::sinh(t);
-  return l_ * (t * c + (t * cos_half_ - (1 - std::cos(psi0_))) * sh) / (c + cos_half_ * sh);
+  return l_ * (t * c + (t * cos_half_ - (1 - cos_)) * sh) / (c + cos_half_ * sh);
 }
 
 double DesernoMeniscus2004::y(double s) const {
@@ -27,7 +31,7 @@ double DesernoMeniscus2004::height_at_distance(double distance) const {
   // overflow long before it matters.
   if (distance > 40 * l_) return 0;
   // x(s) >= s cos(psi0) and x(s) <= s, so the root lies in [distance, distance / cos psi0].
-  double lo = distance, hi = distance / std::cos(psi0_);
+  double lo = distance, hi = distance / cos_;
   // Newton from the middle with dx/ds = cos(psi(s)) > 0, safeguarded by bisection.
   double s = 0.5 * (lo + hi);
   for (int iteration = 0; iteration < 60; ++iteration) {

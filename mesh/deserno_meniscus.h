@@ -23,7 +23,7 @@ class DesernoMeniscus2004 {
   double height_at_distance(double distance) const;
 
  private:
-  double psi0_, l_, cos_half_, sin_half_;
+  double psi0_, l_, cos_half_, sin_half_, cos_;
 };
 
 }  // namespace dp::mesh

@@ -58,6 +58,12 @@ double largest_radius(const LiquidParticles& p) {
   return r;
 }
 
+struct WallNode {
+  Vec3d x;
+  std::size_t local, node;  // in the block's sums, in the grid
+  WallPoint wall;           // xbar_p
+};
+
 struct BlockResult {
   bool active = false, near_walls = false;
   CorrectionCounts correction;
@@ -89,30 +95,40 @@ ScalarGrid sample_liquid_field(const LiquidParticles& particles, double kernel_r
       result.active = true;
       // The walls' distance from the block's centre, which bounds it at any xbar.
       const Vec3d centre = 0.5 * (b.lo + b.hi);
-      double centre_wall_distance = 0;
+      WallPoint centre_wall;
       if (with_walls) {
         const double half_diagonal = 0.5 * length(b.hi - b.lo);
-        const WallPoint w = correction->walls().closest(centre, half_diagonal + wall_reach);
-        result.near_walls = w.found;
-        centre_wall_distance = w.distance;
+        centre_wall = correction->walls().closest(centre, half_diagonal + wall_reach);
+        result.near_walls = centre_wall.found;
       }
       const int ny = b.nodes[1][1] - b.nodes[1][0], nz = b.nodes[2][1] - b.nodes[2][0];
-      const BlockKernelSums sums = gather_block_kernel_sums(b.lo, ny, nz, box.voxel_size, particles, near,
-                                                            kernel_radius, result.near_walls);
+      BlockKernelSums sums = gather_block_kernel_sums(b.lo, ny, nz, box.voxel_size, particles, near, kernel_radius);
+      // Nodes whose xbar has a wall within reach, corrected once the block
+      // has its velocity sums: most blocks near walls have none.
+      std::vector<WallNode> wall_nodes;
+      WallPoint last_wall = centre_wall;  // the next node's xbar_p most likely lies on the same triangle
       for (int k = b.nodes[2][0]; k < b.nodes[2][1]; ++k)
         for (int j = b.nodes[1][0]; j < b.nodes[1][1]; ++j)
           for (int i = b.nodes[0][0]; i < b.nodes[0][1]; ++i) {
             const std::size_t local = sums.node(i - b.nodes[0][0], j - b.nodes[1][0], k - b.nodes[2][0]);
+            const std::size_t node = static_cast<std::size_t>(box.node_index(i, j, k));
             const LocalFluid f = local_fluid(sums.at(local));
-            double phi = zhu_bridson_distance(f, kernel_radius);
-            if (result.near_walls) {
-              const Vec3d x = box.node_position(i, j, k);
-              const double xbar_wall_gap = centre_wall_distance - length(x + f.mean_offset - centre);
-              if (correction->wall_within_reach(xbar_wall_gap, f.mean_radius))
-                phi = correction->distance(x, f, phi, result.correction);
-            }
-            grid.values[static_cast<std::size_t>(box.node_index(i, j, k))] = static_cast<float>(phi);
+            const double phi = zhu_bridson_distance(f, kernel_radius);
+            grid.values[node] = static_cast<float>(phi);
+            if (!result.near_walls) continue;
+            const Vec3d x = box.node_position(i, j, k);
+            const double xbar_wall_gap = centre_wall.distance - length(x + f.mean_offset - centre);
+            if (!correction->wall_within_reach(xbar_wall_gap, f.mean_radius)) continue;
+            const WallPoint wall = correction->fluid_wall(x, f, phi, result.correction, last_wall);
+            if (!wall.found) continue;
+            wall_nodes.push_back({x, local, node, wall});
+            last_wall = wall;
           }
+      if (wall_nodes.empty()) return;
+      add_block_velocity_sums(sums, b.lo, box.voxel_size, particles, near, kernel_radius);
+      for (const WallNode& w : wall_nodes)
+        grid.values[w.node] =
+            static_cast<float>(correction->corrected_distance(w.x, local_fluid(sums.at(w.local)), w.wall, result.correction));
     });
   }
   if (counts) {

@@ -3,6 +3,7 @@
 // for a point, the closest point on any rigid, the wall's normal there and
 // the distance, through Embree 3 point queries (rtcPointQuery) over one BVH
 // of all rigid triangles.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ struct WallPoint {
   Vec3d face_normal;  // unit geometric normal of the triangle holding it (vertex winding, counter-clockwise)
   double distance = 0;
   int rigid = -1;  // index into the meshes the walls were built from
+  unsigned triangle = 0;  // index into that mesh's triangles
 };
 
 class RigidWalls {
@@ -31,18 +33,23 @@ class RigidWalls {
   // The closest point of any rigid strictly within max_distance of x, or
   // found = false. Safe to call from many threads at once. Ties between
   // triangles at the same distance go to the lower (rigid, triangle) id, so
-  // the answer does not depend on the BVH's traversal order.
-  WallPoint closest(Vec3d x, double max_distance) const;
+  // the answer does not depend on the BVH's traversal order. A `hint`, a
+  // wall point found for a nearby point, changes nothing in the answer but
+  // lets the search start from its triangle's distance to x.
+  WallPoint closest(Vec3d x, double max_distance, const WallPoint* hint = nullptr) const;
 
   bool empty() const { return rigids_.empty(); }
   std::size_t rigid_count() const { return rigids_.size(); }
 
  private:
   struct Rigid {
-    std::vector<Vec3d> position;
-    std::vector<std::array<std::uint32_t, 3>> triangles;
+    // Per triangle, side by side for the search's callbacks.
+    std::vector<std::array<Vec3d, 3>> corners;
+    std::vector<Vec3d> normal;  // unit, counter-clockwise
+    std::vector<std::uint32_t> triangle_of_piece;  // Embree's primitives are pieces of the triangles
   };
   struct Embree;
+  struct Search;
 
   std::vector<Rigid> rigids_;
   std::unique_ptr<Embree> embree_;

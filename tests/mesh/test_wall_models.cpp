@@ -112,6 +112,68 @@ TEST(mesh_RigidWalls, NothingBeyondTheSearchRadius) {
   EXPECT_FALSE(none.closest({0, 0, 0}, 100).found);
 }
 
+// A disc of `segments` slivers fanned around its centre (as cylinder caps
+// often are), tilted so that no sliver lies along the axes: the triangles
+// RigidWalls hands to Embree in pieces.
+io::TriangleMesh tilted_fan(int segments) {
+  io::TriangleMesh m;
+  const double tilt = 0.3;
+  auto at = [&](double x, double z) {
+    m.positions.push_back({float(x), float(std::sin(tilt) * z), float(std::cos(tilt) * z)});
+  };
+  at(0, 0);
+  for (int s = 0; s < segments; ++s) at(std::cos(2 * M_PI * s / segments), std::sin(2 * M_PI * s / segments));
+  for (int s = 0; s < segments; ++s)
+    m.triangles.push_back({0u, std::uint32_t(1 + s), std::uint32_t(1 + (s + 1) % segments)});
+  m.normals.assign(m.positions.size(), {0, 1, 0});
+  return m;
+}
+
+// The answer RigidWalls::closest promises, by trying every triangle.
+WallPoint closest_by_brute_force(const io::TriangleMesh& m, Vec3d x, double max_distance) {
+  WallPoint best;
+  best.distance = max_distance;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    Vec3d v[3];
+    for (int k = 0; k < 3; ++k) {
+      const auto& p = m.positions[m.triangles[t][k]];
+      v[k] = {p[0], p[1], p[2]};
+    }
+    const Vec3d q = closest_point_on_triangle(x, v[0], v[1], v[2]);
+    if (length(q - x) < best.distance) best = {true, q, normalized(cross(v[1] - v[0], v[2] - v[0])), length(q - x), 0, unsigned(t)};
+  }
+  return best;
+}
+
+// Embree searches pieces of the fan's slivers and may start from a hint;
+// neither may change the answer, bit for bit.
+TEST(mesh_RigidWalls, PiecesAndHintsGiveTheBruteForceAnswerOnAFan) {
+  const io::TriangleMesh fan = tilted_fan(360);
+  const RigidWalls walls({fan});
+  std::mt19937 random(11);
+  auto uniform = [&](double a, double b) { return a + (b - a) * double(random()) / double(std::mt19937::max()); };
+  for (int n = 0; n < 3000; ++n) {
+    const Vec3d x{uniform(-1.2, 1.2), uniform(-0.5, 0.5), uniform(-1.2, 1.2)};
+    const double reach = uniform(0.01, 0.6);
+    const WallPoint expected = closest_by_brute_force(fan, x, reach);
+    WallPoint hint;
+    hint.found = true;
+    hint.triangle = unsigned(random() % fan.triangles.size());
+    hint.rigid = 0;
+    const WallPoint* const hints[] = {nullptr, &hint};
+    for (const WallPoint* h : hints) {
+      const WallPoint w = walls.closest(x, reach, h);
+      ASSERT_EQ(w.found, expected.found) << n;
+      if (!expected.found) continue;
+      ASSERT_EQ(w.triangle, expected.triangle) << n;
+      ASSERT_EQ(w.distance, expected.distance) << n;
+      ASSERT_EQ(w.point.x, expected.point.x);
+      ASSERT_EQ(w.point.y, expected.point.y);
+      ASSERT_EQ(w.point.z, expected.point.z);
+    }
+  }
+}
+
 SurfaceMesh tetrahedron() {
   SurfaceMesh m;
   m.position = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
