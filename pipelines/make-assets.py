@@ -163,7 +163,7 @@ def main():
     # Mirror (Fig. 5, 7): s = 2 mm; 136 x 136 spacings -> 137^2 = 18769, facing +z, standing
     # in a basin that catches the drops running off it (Fig. 7): a floor of 166 x 40 spacings
     # 6 spacings below the mirror's lower edge and walls 10 spacings high, so drops that slip
-    # under the mirror or splash stay in the shot: 29.7 K rigid particles together (paper: 28 K).
+    # under the mirror or splash stay in the shot: 29736 rigid particles together (paper: 28 K).
     half = 136 * s / 2
     quad("mirror.obj", "mirror of the SCA logo scenes, 136 x 136 particle spacings of 2 mm, normal +z",
          (-half, 0.0, 0.0), (2 * half, 0.0, 0.0), (0.0, 2 * half, 0.0))
