@@ -31,15 +31,19 @@ class PresetCli : public ::testing::Test {
     fs::remove_all(work_);
     fs::create_directories(work_);
   }
-  // A copy of an asset scene in the work folder, its relative paths made absolute.
-  fs::path copy_scene(const std::string& name, const nlohmann::json& presets) {
-    nlohmann::json doc = read_json(kSource / "assets/scenes" / (name + ".json"));
+  // An asset scene's rigids with their mesh and image paths made absolute.
+  static void make_rigid_paths_absolute(nlohmann::json& rigids) {
     const fs::path dir = kSource / "assets/scenes";
-    for (auto& r : doc["simulation"]["rigids"]) {
+    for (auto& r : rigids) {
       r["mesh"] = (dir / r["mesh"].get<std::string>()).lexically_normal().string();
       if (r.contains("texture") && r["texture"].contains("max_mass_image"))
         r["texture"]["max_mass_image"] = (dir / r["texture"]["max_mass_image"].get<std::string>()).lexically_normal().string();
     }
+  }
+  // A copy of an asset scene in the work folder, its relative paths made absolute.
+  fs::path copy_scene(const std::string& name, const nlohmann::json& presets) {
+    nlohmann::json doc = read_json(kSource / "assets/scenes" / (name + ".json"));
+    make_rigid_paths_absolute(doc["simulation"]["rigids"]);
     doc["presets"] = presets;
     const fs::path file = work_ / (name + ".json");
     std::ofstream(file) << doc.dump(2);
@@ -90,7 +94,7 @@ TEST_F(PresetCli, TextureOnlySceneRunsWithoutLiquid) {
   // The paper's SCA Logo Tex: no liquid particles, water only in the mirror's texture.
   // The scene's rigids with a small texture: a preset replaces the whole array.
   nlohmann::json rigids = read_json(kSource / "assets/scenes/sca_logo_tex.json")["simulation"]["rigids"];
-  for (auto& r : rigids) r["mesh"] = (kSource / "assets/scenes" / r["mesh"].get<std::string>()).lexically_normal().string();
+  make_rigid_paths_absolute(rigids);
   rigids[0]["texture"] = {{"resolution", {64, 64}}};
   const fs::path scene = copy_scene(
       "sca_logo_tex",
@@ -113,10 +117,8 @@ TEST_F(PresetCli, SoakedLettersEmitDropsThatStayInTheBasin) {
   // basin (floor y = -12 mm, walls at |x| = 166 mm, |z| = 40 mm) and not leave it.
   nlohmann::json doc = read_json(kSource / "assets/scenes/sca_logo.json");
   nlohmann::json rigids = doc["presets"]["preview"]["simulation"]["rigids"];
-  const fs::path dir = kSource / "assets/scenes";
-  for (auto& r : rigids) r["mesh"] = (dir / r["mesh"].get<std::string>()).lexically_normal().string();
+  make_rigid_paths_absolute(rigids);
   rigids[0]["texture"]["resolution"] = {128, 128};
-  rigids[0]["texture"]["max_mass_image"] = (dir / rigids[0]["texture"]["max_mass_image"].get<std::string>()).lexically_normal().string();
   const fs::path scene = copy_scene(
       "sca_logo", {{"short",
                     {{"simulation",
