@@ -48,11 +48,6 @@ struct FillValue {
   };
 };
 
-struct AbsoluteValue {
-  const float* v;
-  DP_HD float operator()(std::size_t i) const { return fabsf(v[i]); }
-};
-
 template <class T>
 struct ValueAsDouble {
   const T* v;
@@ -109,9 +104,10 @@ class AirGrid {
   using Buffer = typename Exec::template Buffer<T>;
 
  public:
-  // Courant sum of one vapor transport sub-step (positivity, see
-  // vapor_transport_fv.h) and diffusion number of one diffusion sub-step.
-  static constexpr double kMaxVaporCourant = 0.3;
+  // Largest outflow Courant number of a cell in one vapor transport
+  // sub-step (positive below 2/3, see CellOutflowSpeed) and diffusion number
+  // of one diffusion sub-step.
+  static constexpr double kMaxVaporCourant = 0.6;
   static constexpr double kMaxDiffusionNumber = 0.9;
 
   // `rigid`: the static rigid particles in their neighbour grid (a view with
@@ -213,12 +209,11 @@ class AirGrid {
     enforce_boundaries(exec);
   }
 
-  // Conservative vapor transport, sub-stepped so the Courant sum stays below
-  // kMaxVaporCourant; returns the number of sub-steps.
+  // Conservative vapor transport, sub-stepped so that no cell's outflow
+  // Courant number exceeds kMaxVaporCourant; returns the number of sub-steps.
   int transport_vapor(const Exec& exec, float dt) {
-    double courant = 0;
-    for (int a = 0; a < 3; ++a) courant += exec.max(u_[a].size(), AbsoluteValue{Exec::ptr(u_[a])}, 0.0f);
-    courant *= dt / grid_.dx;
+    const double speed = exec.max(grid_.cell_count(), CellOutflowSpeed{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2])}, 0.0f);
+    const double courant = speed * dt / grid_.dx;
     const int substeps = courant > kMaxVaporCourant ? static_cast<int>(std::ceil(courant / kMaxVaporCourant)) : 1;
     const float h = dt / static_cast<float>(substeps);
     for (int s = 0; s < substeps; ++s) {
@@ -242,14 +237,17 @@ class AirGrid {
 
   void advect_temperature(const Exec& exec, float dt) {
     const FaceVelocity vel = face_velocity(grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]));
-    advect_field(exec, cell_lattice(grid_, Exec::ptr(temperature_excess_)), vel, dt, temperature_tmp_, temperature_back_);
+    advect_field<kCellCentres>(exec, cell_lattice(grid_, Exec::ptr(temperature_excess_)), vel, dt, temperature_tmp_,
+                               temperature_back_);
     temperature_excess_.swap(temperature_tmp_);
   }
 
   // Every component is advected by the velocity at the start of the call.
   void advect_velocity(const Exec& exec, float dt) {
     const FaceVelocity vel = face_velocity(grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]));
-    for (int a = 0; a < 3; ++a) advect_field(exec, vel.component(a), vel, dt, u_tmp_[a], u_back_[a]);
+    advect_field<0>(exec, vel.u, vel, dt, u_tmp_[0], u_back_[0]);
+    advect_field<1>(exec, vel.v, vel, dt, u_tmp_[1], u_back_[1]);
+    advect_field<2>(exec, vel.w, vel, dt, u_tmp_[2], u_back_[2]);
     for (int a = 0; a < 3; ++a) u_[a].swap(u_tmp_[a]);
     enforce_boundaries(exec);
   }
@@ -380,20 +378,21 @@ class AirGrid {
   }
 
  private:
-  // Semi-Lagrangian, or MacCormack on top of it, from `source` into `out`.
-  template <class T>
+  // Semi-Lagrangian, or MacCormack on top of it, from `source` into `out`;
+  // `Points` names source's lattice (mac_shift).
+  template <int Points, class T>
   void advect_field(const Exec& exec, const Lattice<T>& source, const FaceVelocity& vel, float dt, Buffer<T>& out,
                     Buffer<T>& scratch) {
     const float c = dt / grid_.dx;
     const int nx = source.nx, ny = source.ny, nz = source.nz;
-    exec.parallel_for_3d(nx, ny, nz, AdvectSemiLagrangian<T>{source, vel, c, Exec::ptr(out)});
+    exec.parallel_for_3d(nx, ny, nz, AdvectSemiLagrangian<T, Points>{source, vel, c, Exec::ptr(out)});
     if (settings_.advection == AirAdvection::SemiLagrangian) return;
     // Forward step in `out`, backward step in `scratch`; the corrected value
     // overwrites the backward one in place (each point reads only its own).
     Lattice<T> forward = source;
     forward.value = Exec::ptr(out);
-    exec.parallel_for_3d(nx, ny, nz, AdvectSemiLagrangian<T>{forward, vel, -c, Exec::ptr(scratch)});
-    exec.parallel_for_3d(nx, ny, nz, MacCormackCorrect<T>{source, vel, c, Exec::ptr(out), Exec::ptr(scratch), Exec::ptr(scratch)});
+    exec.parallel_for_3d(nx, ny, nz, AdvectSemiLagrangian<T, Points>{forward, vel, -c, Exec::ptr(scratch)});
+    exec.parallel_for_3d(nx, ny, nz, MacCormackCorrect<T, Points>{source, vel, c, Exec::ptr(out), Exec::ptr(scratch), Exec::ptr(scratch)});
     out.swap(scratch);
   }
 

@@ -28,6 +28,10 @@ DP_HD inline bool any_particle_in_box(const GridView& set, Vec3 lo, Vec3 hi) {
   i1 = i1 + 1 < set.grid.nx ? i1 + 1 : set.grid.nx - 1;
   j1 = j1 + 1 < set.grid.ny ? j1 + 1 : set.grid.ny - 1;
   k1 = k1 + 1 < set.grid.nz ? k1 + 1 : set.grid.nz - 1;
+  // The box's cells all lie between its first and last cell in the grid's
+  // linear order, and so do their particles: where that whole run is empty,
+  // as it is for most cells far from the liquid, no row needs a look.
+  if (set.cell_begin[set.grid.linear(i0, j0, k0)] >= set.cell_end[set.grid.linear(i1, j1, k1)]) return false;
   for (int k = k0; k <= k1; ++k)
     for (int j = j0; j <= j1; ++j) {
       // A row of cells along x is one contiguous run of particles.

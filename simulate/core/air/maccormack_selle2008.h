@@ -8,7 +8,7 @@
 
 namespace dp {
 
-template <class T>
+template <class T, int Points>
 struct MacCormackCorrect {
   Lattice<T> source;  // phi at the start of the step
   FaceVelocity velocity;
@@ -17,8 +17,7 @@ struct MacCormackCorrect {
   const T* backward;  // phi~
   T* out;
 
-  DP_HD void operator()(std::size_t n) const { correct(n, source.point(n)); }
-  DP_HD void operator()(int i, int j, int k) const { correct(source.index(i, j, k), source.point(i, j, k)); }
+  DP_HD void operator()(int i, int j, int k) const { correct(source.index(i, j, k), GridPoint{i, j, k, mac_shift<Points>()}); }
 
   DP_HD void correct(std::size_t n, const GridPoint& p) const {
     T lo, hi;

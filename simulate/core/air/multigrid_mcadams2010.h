@@ -7,8 +7,10 @@
 // the operator re-discretised on each level (a coarse cell is unknown when
 // any of its children is). The cycle is symmetric and positive definite, as
 // CG needs. McAdams et al. add extra Gauss-Seidel sweeps near the boundary;
-// these are left out (docs/paper-map.md, departures): CG absorbs the weaker
-// cycle with a few more iterations.
+// instead, prolongation here honours the boundary conditions (mirrored at
+// closed walls, negated at open faces, extrapolated next to obstacles), which
+// keeps the iteration count independent of resolution (docs/paper-map.md,
+// departures).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -36,13 +38,75 @@ struct CoarsenUnknown {
   }
 };
 
-// Weights of cell-centred trilinear prolongation along one axis: fine cell
-// 2I takes 3/4 of coarse I and 1/4 of I-1; fine 2I+1 3/4 of I and 1/4 of I+1.
-DP_HD inline float prolongation_weight(int fine, int coarse) {
+// Weight of coarse cell `coarse` in the trilinear prolongation to cell-centred
+// fine cell `fine`, along one axis of `nc` coarse cells: fine cell 2I takes
+// 3/4 of coarse I and 1/4 of I-1, fine 2I+1 3/4 of I and 1/4 of I+1. Where
+// that second coarse cell lies beyond the grid, the error there is taken as
+// the mirror of the near cell's across a closed wall (Neumann: the near cell
+// gets weight 1) and as its negative across an open face (phi = 0 on the
+// face: weight 1/2). Treating it as zero instead, as if every wall were
+// open, halved the correction next to the walls and cost CG twice the
+// iterations (docs/benchmarks.md, air step).
+DP_HD inline float prolongation_weight(int fine, int coarse, int nc, bool open_low, bool open_high) {
   const int near = fine >> 1;
   const int far = (fine & 1) ? near + 1 : near - 1;
-  return coarse == near ? 0.75f : (coarse == far ? 0.25f : 0.0f);
+  if (coarse == near) {
+    if (far < 0) return open_low ? 0.5f : 1.0f;
+    if (far >= nc) return open_high ? 0.5f : 1.0f;
+    return 0.75f;
+  }
+  return coarse == far ? 0.25f : 0.0f;
 }
+
+// prolongation_weight along one axis of the coarse level's grid.
+DP_HD inline float prolongation_weight(const PoissonLevel& coarse, int axis, int fine, int coarse_index) {
+  const int nc = axis == 0 ? coarse.nx : (axis == 1 ? coarse.ny : coarse.nz);
+  return prolongation_weight(fine, coarse_index, nc, coarse.faces.open(axis, 0), coarse.faces.open(axis, 1));
+}
+
+// Per fine cell, the prolongation's weights over all coarse cells in the grid
+// divided by those over the unknown ones: a coarse cell that is no unknown
+// (all its children rigid or liquid) holds no error, and weighting it in as
+// zero would pull the correction next to an obstacle towards zero, as if the
+// obstacle were open. Scaling the rest up extrapolates instead (Neumann, as
+// the obstacle's faces are); 1 away from obstacles.
+struct ProlongationScale {
+  PoissonLevel fine, coarse;
+  float* scale;
+  DP_HD void operator()(int i, int j, int k) const {
+    const int ci[2] = {i >> 1, (i & 1) ? (i >> 1) + 1 : (i >> 1) - 1};
+    const int cj[2] = {j >> 1, (j & 1) ? (j >> 1) + 1 : (j >> 1) - 1};
+    const int ck[2] = {k >> 1, (k & 1) ? (k >> 1) + 1 : (k >> 1) - 1};
+    float all = 0.0f, unknown = 0.0f;
+    for (int c = 0; c < 2; ++c) {
+      if (ck[c] < 0 || ck[c] >= coarse.nz) continue;
+      const float wk = prolongation_weight(coarse, 2, k, ck[c]);
+      for (int b = 0; b < 2; ++b) {
+        if (cj[b] < 0 || cj[b] >= coarse.ny) continue;
+        const float wjk = wk * prolongation_weight(coarse, 1, j, cj[b]);
+        for (int a = 0; a < 2; ++a) {
+          if (ci[a] < 0 || ci[a] >= coarse.nx) continue;
+          const float w = wjk * prolongation_weight(coarse, 0, i, ci[a]);
+          all += w;
+          if (coarse.unknown[coarse.index(ci[a], cj[b], ck[c])]) unknown += w;
+        }
+      }
+    }
+    // An unknown fine cell's own coarse cell is unknown, so `unknown` > 0 there.
+    scale[fine.index(i, j, k)] = unknown > 0.0f ? all / unknown : 0.0f;
+  }
+};
+
+// The residual the cycle restricts: scale (b - A x), so that restriction
+// stays the transpose of the scaled prolongation and the cycle symmetric.
+struct ScaledPoissonResidual {
+  PoissonLevel level;
+  const float* x;
+  const float* b;
+  const float* scale;
+  float* r;
+  DP_HD void operator()(std::size_t c) const { r[c] = level.unknown[c] ? scale[c] * (b[c] - level.apply(x, c)) : 0.0f; }
+};
 
 // b_coarse = P^T r / 2: the transpose of the prolongation, scaled so that the
 // re-discretised coarse operator (cell size 2 dx, unscaled form) sees the
@@ -89,13 +153,13 @@ struct RestrictResidual {
     float s = 0.0f;
     for (int fk = 2 * K - 1; fk <= 2 * K + 2; ++fk) {
       if (fk < 0 || fk >= fine.nz) continue;
-      const float wk = prolongation_weight(fk, K);
+      const float wk = prolongation_weight(coarse, 2, fk, K);
       for (int fj = 2 * J - 1; fj <= 2 * J + 2; ++fj) {
         if (fj < 0 || fj >= fine.ny) continue;
-        const float wjk = wk * prolongation_weight(fj, J);
+        const float wjk = wk * prolongation_weight(coarse, 1, fj, J);
         for (int fi = 2 * I - 1; fi <= 2 * I + 2; ++fi) {
           if (fi < 0 || fi >= fine.nx) continue;
-          s += wjk * prolongation_weight(fi, I) * r[fine.index(fi, fj, fk)];
+          s += wjk * prolongation_weight(coarse, 0, fi, I) * r[fine.index(fi, fj, fk)];
         }
       }
     }
@@ -103,9 +167,10 @@ struct RestrictResidual {
   }
 };
 
-// x_fine += P e_coarse on the fine unknowns.
+// x_fine += P e_coarse on the fine unknowns, P scaled by ProlongationScale.
 struct ProlongAndAdd {
   PoissonLevel coarse, fine;
+  const float* scale;
   const float* e;
   float* x;
   DP_HD void operator()(std::size_t f) const {
@@ -121,7 +186,7 @@ struct ProlongAndAdd {
     const int ck[2] = {k >> 1, (k & 1) ? (k >> 1) + 1 : (k >> 1) - 1};
     const bool interior = ci[0] >= 1 && ci[0] + 1 < coarse.nx && cj[0] >= 1 && cj[0] + 1 < coarse.ny && ck[0] >= 1 &&
                           ck[0] + 1 < coarse.nz;
-    x[f] += interior ? interior_sum(ci, cj, ck) : boundary_sum(ci, cj, ck);
+    x[f] += scale[f] * (interior ? interior_sum(ci, cj, ck) : boundary_sum(i, j, k, ci, cj, ck));
   }
 
   // All eight coarse cells exist: the terms and order of boundary_sum,
@@ -140,16 +205,18 @@ struct ProlongAndAdd {
     return s;
   }
 
-  DP_HD float boundary_sum(const int* ci, const int* cj, const int* ck) const {
+  // Fine cell (i, j, k) from its coarse cells ci, cj, ck (near, far per axis).
+  DP_HD float boundary_sum(int i, int j, int k, const int* ci, const int* cj, const int* ck) const {
     float s = 0.0f;
     for (int c = 0; c < 2; ++c) {
       if (ck[c] < 0 || ck[c] >= coarse.nz) continue;
+      const float wk = prolongation_weight(coarse, 2, k, ck[c]);
       for (int b = 0; b < 2; ++b) {
         if (cj[b] < 0 || cj[b] >= coarse.ny) continue;
+        const float wjk = wk * prolongation_weight(coarse, 1, j, cj[b]);
         for (int a = 0; a < 2; ++a) {
           if (ci[a] < 0 || ci[a] >= coarse.nx) continue;
-          const float w = (a ? 0.25f : 0.75f) * (b ? 0.25f : 0.75f) * (c ? 0.25f : 0.75f);
-          s += w * e[coarse.index(ci[a], cj[b], ck[c])];
+          s += wjk * prolongation_weight(coarse, 0, i, ci[a]) * e[coarse.index(ci[a], cj[b], ck[c])];
         }
       }
     }
@@ -200,6 +267,7 @@ class MultigridPreconditioner {
       levels_.push_back(std::move(l));
       // Halve while every axis keeps at least four cells.
       if (nx < 8 || ny < 8 || nz < 8) break;
+      levels_.back().prolongation_scale.resize(n);
       nx = (nx + 1) / 2;
       ny = (ny + 1) / 2;
       nz = (nz + 1) / 2;
@@ -219,6 +287,10 @@ class MultigridPreconditioner {
       if (l > 0) exec.parallel_for(c.unknown.size(), CoarsenUnknown{view(l - 1), c.nx, c.ny, c.nz, Exec::ptr(c.unknown)});
       exec.parallel_for(c.unknown.size(), BuildPoissonStencil{view(l), Exec::ptr(c.stencil), Exec::ptr(c.diagonal)});
     }
+    for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
+      Level& f = levels_[l];
+      exec.parallel_for_3d(f.nx, f.ny, f.nz, ProlongationScale{view(l), view(l + 1), Exec::ptr(f.prolongation_scale)});
+    }
   }
 
   // z = M^-1 r, one V-cycle.
@@ -237,6 +309,7 @@ class MultigridPreconditioner {
     int nx = 0, ny = 0, nz = 0;
     Buffer<std::uint8_t> unknown, stencil, diagonal;
     Buffer<float> x, b, tmp;
+    Buffer<float> prolongation_scale;  // levels with a coarser one
   };
 
   // Damped Jacobi sweeps on level l's A x = b, as passes of one launcher
@@ -256,11 +329,12 @@ class MultigridPreconditioner {
     }
     smooth(exec, l, b, x, true, kSmoothingSweeps);
     const PoissonLevel p = view(l);
-    exec.parallel_for(v.tmp.size(), PoissonResidual{p, x, b, Exec::ptr(v.tmp)});
+    const float* scale = Exec::ptr(v.prolongation_scale);
+    exec.parallel_for(v.tmp.size(), ScaledPoissonResidual{p, x, b, scale, Exec::ptr(v.tmp)});
     Level& c = levels_[l + 1];
     exec.parallel_for_3d(c.nx, c.ny, c.nz, RestrictResidual{p, view(l + 1), Exec::ptr(v.tmp), Exec::ptr(c.b)});
     cycle(exec, l + 1, Exec::ptr(c.b), Exec::ptr(c.x));
-    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAndAdd{view(l + 1), p, Exec::ptr(c.x), x});
+    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAndAdd{view(l + 1), p, scale, Exec::ptr(c.x), x});
     smooth(exec, l, b, x, false, kSmoothingSweeps);
   }
 

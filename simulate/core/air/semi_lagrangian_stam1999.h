@@ -17,18 +17,18 @@ DP_HD inline GridPoint trace_back(const FaceVelocity& velocity, GridPoint p, flo
   return p;
 }
 
-// out[n] = source(trace_back(x_n)) for every point x_n of source's lattice
-// (cell centres or the faces of one axis).
-template <class T>
+// out[n] = source(trace_back(x_n)) for every point x_n of source's lattice,
+// the cell centres or the faces of one axis (`Points`, as in mac_shift).
+template <class T, int Points>
 struct AdvectSemiLagrangian {
   Lattice<T> source;
   FaceVelocity velocity;
   float cells_per_speed;  // dt / dx
   T* out;
 
-  DP_HD void operator()(std::size_t n) const { out[n] = source.sample(trace_back(velocity, source.point(n), cells_per_speed)); }
   DP_HD void operator()(int i, int j, int k) const {
-    out[source.index(i, j, k)] = source.sample(trace_back(velocity, source.point(i, j, k), cells_per_speed));
+    const GridPoint p{i, j, k, mac_shift<Points>()};
+    out[source.index(i, j, k)] = source.sample(trace_back(velocity, p, cells_per_speed));
   }
 };
 

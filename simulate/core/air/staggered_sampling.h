@@ -115,16 +115,29 @@ DP_HD inline Lattice<float> face_lattice(const MacGrid& g, int axis, const float
                         g.face_n(axis, 0), g.face_n(axis, 1), g.face_n(axis, 2)};
 }
 
+// Where the points of one of a MAC grid's lattices sit in their cell, in
+// cells: the faces of axis `Points` (0, 1, 2) lie at 0 along that axis and
+// 1/2 along the other two; kCellCentres at 1/2 along all three. As a
+// compile-time constant it lets a kernel that visits a lattice's own points
+// fold the corner search of every sample taken there.
+inline constexpr int kCellCentres = 3;
+template <int Points>
+DP_HD constexpr Vec3 mac_shift() {
+  return Vec3{Points == 0 ? 0.0f : 0.5f, Points == 1 ? 0.0f : 0.5f, Points == 2 ? 0.0f : 0.5f};
+}
+
 // The three staggered components, sampled together (m/s).
 struct FaceVelocity {
   Lattice<float> u, v, w;
   // Each axis has two shifts (0 on the faces of that axis, 0.5 for the other
   // two components) and the lattice sizes pair up likewise, so six located
-  // corners serve the three components instead of nine.
+  // corners serve the three components instead of nine. The shifts are the
+  // MAC grid's constants (face_lattice), not read from u, v, w, so that
+  // they fold where p's offset is a constant too.
   DP_HD Vec3 at(const GridPoint& p) const {
-    const Corner x0 = u.corner(0, p), x5 = v.corner(0, p);
-    const Corner y0 = v.corner(1, p), y5 = u.corner(1, p);
-    const Corner z0 = w.corner(2, p), z5 = u.corner(2, p);
+    const Corner x0 = Corner::locate(p.i, p.offset.x - 0.0f, u.nx), x5 = Corner::locate(p.i, p.offset.x - 0.5f, v.nx);
+    const Corner y0 = Corner::locate(p.j, p.offset.y - 0.0f, v.ny), y5 = Corner::locate(p.j, p.offset.y - 0.5f, u.ny);
+    const Corner z0 = Corner::locate(p.k, p.offset.z - 0.0f, w.nz), z5 = Corner::locate(p.k, p.offset.z - 0.5f, u.nz);
     return Vec3{u.sample(x0, y5, z5), v.sample(x5, y0, z5), w.sample(x5, y5, z0)};
   }
   DP_HD const Lattice<float>& component(int axis) const { return axis == 0 ? u : (axis == 1 ? v : w); }
