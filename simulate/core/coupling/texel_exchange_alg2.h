@@ -74,6 +74,12 @@ struct ExchangeParameters {
   float wet_threshold = 0.36787944f;  // e^-1
 };
 
+// A corner of weight 0 (a rigid cell: four of the eight for a plate's
+// texels) adds exactly +0 to a stencil's sums: they start at +0 and never
+// turn -0, and the air's values are finite (the step that makes one stops
+// the run with the same error either way). The sums skip it, and so do the
+// pairs' shares (0 units): two divisions and six products fewer per corner.
+//
 // What the air is at a surfel, from the cells of its stencil; the speed is
 // left 0 (it is sampled only where it matters, see air_speed_if_needed).
 // kUnitSum: wsum is 1 (over_weight_sum).
@@ -81,6 +87,7 @@ template <bool kUnitSum = false>
 DP_HD inline AirAtSurfel air_at_stencil(const AirCellsView& air, const std::uint32_t* cell, const float* w, float wsum) {
   double rho = 0, excess = 0;
   for (int k = 0; k < kStencilSize; ++k) {
+    if (w[k] == 0) continue;
     rho += static_cast<double>(w[k]) * air.vapor[cell[k]];
     excess += static_cast<double>(w[k]) * air.temperature_excess[cell[k]];
   }
@@ -97,6 +104,7 @@ template <bool kUnitSum = false>
 DP_HD inline double stencil_speed(const Vec3* cell_velocity, const std::uint32_t* cell, const float* w, float wsum) {
   float x = 0, y = 0, z = 0;
   for (int k = 0; k < kStencilSize; ++k) {
+    if (w[k] == 0) continue;
     const Vec3 c = cell_velocity[cell[k]];
     x = x + w[k] * c.x;
     y = y + w[k] * c.y;
@@ -163,7 +171,7 @@ struct EstimateTexelExchange {
     TexelMassUnits sum = 0;
     const double amount = kg > 0 ? kg : -kg;
     for (int k = 0; k < kStencilSize; ++k) {
-      units[k] = kg != 0 ? transfer_units_of_kg(amount * static_cast<double>(over_weight_sum<kUnitSum>(w[k], wsum)), p.kg_per_unit) : 0;
+      units[k] = kg != 0 && w[k] != 0 ? transfer_units_of_kg(amount * static_cast<double>(over_weight_sum<kUnitSum>(w[k], wsum)), p.kg_per_unit) : 0;
       sum += units[k];
     }
     const TexelMassUnits bound = kg > 0 ? m : room;
