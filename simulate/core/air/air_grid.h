@@ -36,6 +36,7 @@
 #include "air/semi_lagrangian_stam1999.h"
 #include "air/vapor_transport_fv.h"
 #include "air/vorticity_confinement_fedkiw2001.h"
+#include "backend/sorted_runs.h"
 
 namespace dp {
 
@@ -297,6 +298,17 @@ class AirGrid {
     if (vapor_mass) ledger_.exchanged += exec.sum(n, ValueAsDouble<double>{vapor_mass});
     exec.parallel_for(n, AddCellSources{vapor_mass, temperature_change, static_cast<double>(grid_.cell_volume()),
                                         Exec::ptr(vapor_), Exec::ptr(temperature_excess_)});
+  }
+
+  // The same for a vapor mass that is 0 outside the `count` cells listed
+  // (the coupling's active cells): only those are updated, while the
+  // ledger still sums the whole grid, whose one blocked order keeps the
+  // sum's bits independent of which cells are listed.
+  void add_vapor_at(const Exec& exec, const std::uint32_t* cells, std::size_t count, const double* vapor_mass) {
+    ledger_.exchanged += exec.sum(grid_.cell_count(), ValueAsDouble<double>{vapor_mass});
+    if (count == 0) return;
+    exec.parallel_for(count, at_keys(cells, AddCellSources{vapor_mass, nullptr, static_cast<double>(grid_.cell_volume()),
+                                                           Exec::ptr(vapor_), Exec::ptr(temperature_excess_)}));
   }
 
   double vapor_mass(const Exec& exec) const {

@@ -100,7 +100,7 @@ class AirCoupling {
     exec.parallel_for(active, UpdateCellVapor{liquid_.cells.cell(), liquid_.cells.begin(), Exec::ptr(liquid_.cells.sorted_pair),
                                               Exec::ptr(liquid_.pair_eva), kg_per_unit, Exec::ptr(net_units_), Exec::ptr(vapor_kg_)});
     vapor_written_ = liquid_.cells.runs.key;
-    air.add_cell_sources(exec, Exec::ptr(vapor_kg_), nullptr);
+    air.add_vapor_at(exec, liquid_.cells.cell(), active, Exec::ptr(vapor_kg_));
     liquid_to_air_ += exact_units_sum(exec, active, Exec::ptr(net_units_));
   }
 

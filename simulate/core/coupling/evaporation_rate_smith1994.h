@@ -57,20 +57,26 @@ DP_HD inline double smith_mass_rate(double area, double a, double b, double spee
   return smith_mass_rate_at(area, a, b, speed, p_sat, p_c);
 }
 
+// max(x, 0), NaN -> 0. As a compare: fmax and fmin are library calls on
+// x86-64 (they order signed zeros), and a call in a per-texel kernel makes
+// the compiler spill every vector register around it. Only the sign of a
+// zero rate differs from fmax's, and a zero rate moves nothing either way.
+DP_HD inline double positive_part(double x) { return x > 0.0 ? x : 0.0; }
+
 // Eq. 16: evaRate(c, s) = max(dm_s/dtau, 0), kg/s.
 DP_HD inline double evaporation_rate(double area, const EvaporationCoefficients& k, double surface_kelvin, const AirAtSurfel& air) {
-  return fmax(smith_mass_rate(area, k.a, k.b, air.speed, surface_kelvin, air), 0.0);
+  return positive_part(smith_mass_rate(area, k.a, k.b, air.speed, surface_kelvin, air));
 }
 DP_HD inline double evaporation_rate_at(double area, const EvaporationCoefficients& k, double speed, double p_sat, double p_c) {
-  return fmax(smith_mass_rate_at(area, k.a, k.b, speed, p_sat, p_c), 0.0);
+  return positive_part(smith_mass_rate_at(area, k.a, k.b, speed, p_sat, p_c));
 }
 
-// Eq. 17: condRate(c, s) = -min(dm_s/dtau, 0) with b = 0, kg/s.
+// Eq. 17: condRate(c, s) = -min(dm_s/dtau, 0) = max(-dm_s/dtau, 0) with b = 0, kg/s.
 DP_HD inline double condensation_rate(double area, const EvaporationCoefficients& k, double surface_kelvin, const AirAtSurfel& air) {
-  return -fmin(smith_mass_rate(area, k.a, 0.0, air.speed, surface_kelvin, air), 0.0);
+  return positive_part(-smith_mass_rate(area, k.a, 0.0, air.speed, surface_kelvin, air));
 }
 DP_HD inline double condensation_rate_at(double area, const EvaporationCoefficients& k, double p_sat, double p_c) {
-  return -fmin(smith_mass_rate_at(area, k.a, 0.0, 0.0, p_sat, p_c), 0.0);
+  return positive_part(-smith_mass_rate_at(area, k.a, 0.0, 0.0, p_sat, p_c));
 }
 
 }  // namespace dp

@@ -74,15 +74,24 @@ struct ExchangeParameters {
   float wet_threshold = 0.36787944f;  // e^-1
 };
 
+// A corner of weight 0 (a rigid cell: four of the eight for a plate's
+// texels) adds exactly +0 to a stencil's sums: they start at +0 and never
+// turn -0, and the air's values are finite (the step that makes one stops
+// the run with the same error either way). The sums skip it, and so do the
+// pairs' shares (0 units): two divisions and six products fewer per corner.
+//
 // What the air is at a surfel, from the cells of its stencil; the speed is
 // left 0 (it is sampled only where it matters, see air_speed_if_needed).
+// kUnitSum: wsum is 1 (over_weight_sum).
+template <bool kUnitSum = false>
 DP_HD inline AirAtSurfel air_at_stencil(const AirCellsView& air, const std::uint32_t* cell, const float* w, float wsum) {
   double rho = 0, excess = 0;
   for (int k = 0; k < kStencilSize; ++k) {
+    if (w[k] == 0) continue;
     rho += static_cast<double>(w[k]) * air.vapor[cell[k]];
     excess += static_cast<double>(w[k]) * air.temperature_excess[cell[k]];
   }
-  return AirAtSurfel{rho / wsum, air.ambient_temperature + excess / wsum, 0.0};
+  return AirAtSurfel{over_weight_sum<kUnitSum>(rho, wsum), air.ambient_temperature + over_weight_sum<kUnitSum>(excess, wsum), 0.0};
 }
 
 // The air speed enters Eq. 12 only through b, and only for evaporation
@@ -91,15 +100,17 @@ DP_HD inline AirAtSurfel air_at_stencil(const AirCellsView& air, const std::uint
 // quantities, Sec. 6.1) over the surfel's stencil weights.
 // (Per component: the same sums as Vec3's operators, which the compiler
 // otherwise keeps packing and unpacking.)
+template <bool kUnitSum = false>
 DP_HD inline double stencil_speed(const Vec3* cell_velocity, const std::uint32_t* cell, const float* w, float wsum) {
   float x = 0, y = 0, z = 0;
   for (int k = 0; k < kStencilSize; ++k) {
+    if (w[k] == 0) continue;
     const Vec3 c = cell_velocity[cell[k]];
     x = x + w[k] * c.x;
     y = y + w[k] * c.y;
     z = z + w[k] * c.z;
   }
-  return static_cast<double>(length(Vec3{x, y, z})) / wsum;
+  return over_weight_sum<kUnitSum>(static_cast<double>(length(Vec3{x, y, z})), wsum);
 }
 
 DP_HD inline void air_speed_if_needed(const Vec3* cell_velocity, const std::uint32_t* cell, const float* w, float wsum, double b,
@@ -137,20 +148,30 @@ struct EstimateTexelExchange {
     std::uint32_t cell[kStencilSize];
     float w[kStencilSize];
     float wsum = 0;
-    // Eq. 16 (> 0) or Eq. 17 (< 0) times dt: at most one side is non-zero.
-    double kg = 0;
     if (m > 0 || may_condense) {
       float alpha[kStencilSize];
       load_corner_major(pair_cell, pair_alpha, t, count, cell, alpha);
       wsum = air_weights(air.kind, cell, alpha, w);
-      if (wsum > 0) kg = signed_exchange_kg(t, x, cell, w, wsum, m > 0, may_condense);
     }
+    if (wsum == 1.0f)
+      exchange<true>(t, x, m, room, may_condense, cell, w, wsum);
+    else
+      exchange<false>(t, x, m, room, may_condense, cell, w, wsum);
+  }
+
+  // The rest of texel x's (at position t) estimate, from its stencil's
+  // weights (wsum 0: none, or nothing to move); kUnitSum: wsum is 1.
+  template <bool kUnitSum>
+  DP_HD void exchange(std::size_t t, std::uint32_t x, TexelMassUnits m, TexelMassUnits room, bool may_condense, const std::uint32_t* cell,
+                      const float* w, float wsum) const {
+    // Eq. 16 (> 0) or Eq. 17 (< 0) times dt: at most one side is non-zero.
+    const double kg = wsum > 0 ? signed_exchange_kg<kUnitSum>(t, x, cell, w, wsum, m > 0, may_condense) : 0.0;
     // The pairs' shares, each rounded down, then w_t^eva or w_t^cond.
     TexelMassUnits units[kStencilSize];
     TexelMassUnits sum = 0;
     const double amount = kg > 0 ? kg : -kg;
     for (int k = 0; k < kStencilSize; ++k) {
-      units[k] = kg != 0 ? transfer_units_of_kg(amount * static_cast<double>(w[k] / wsum), p.kg_per_unit) : 0;
+      units[k] = kg != 0 && w[k] != 0 ? transfer_units_of_kg(amount * static_cast<double>(over_weight_sum<kUnitSum>(w[k], wsum)), p.kg_per_unit) : 0;
       sum += units[k];
     }
     const TexelMassUnits bound = kg > 0 ? m : room;
@@ -170,14 +191,15 @@ struct EstimateTexelExchange {
 
   // Texel x's (at position t) Eq. 16 rate (positive) or minus its Eq. 17
   // rate, times dt, kg; 0 when the side the pressures pick cannot move water.
+  template <bool kUnitSum>
   DP_HD double signed_exchange_kg(std::size_t t, std::uint32_t x, const std::uint32_t* cell, const float* w, float wsum, bool has_water,
                                   bool may_condense) const {
-    const AirAtSurfel a = air_at_stencil(air, cell, w, wsum);
+    const AirAtSurfel a = air_at_stencil<kUnitSum>(air, cell, w, wsum);
     const double p_sat = saturation.at(t, texel.temperature[x]);        // Eq. 11
     const double p_c = vapor_pressure(a.vapor_density, a.temperature);  // Eq. 10
     if (p_sat > p_c) {
       if (!has_water) return 0;
-      const double speed = p.coefficients.b > 0 ? stencil_speed(cell_velocity, cell, w, wsum) : 0.0;
+      const double speed = p.coefficients.b > 0 ? stencil_speed<kUnitSum>(cell_velocity, cell, w, wsum) : 0.0;
       return evaporation_rate_at(texel.area[x], p.coefficients, speed, p_sat, p_c) * p.dt;  // Eq. 16
     }
     if (!may_condense) return 0;

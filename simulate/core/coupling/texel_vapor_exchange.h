@@ -71,7 +71,7 @@ class TexelVaporExchange {
                                                       Exec::ptr(cond_den_), Exec::ptr(net_units_), Exec::ptr(vapor_kg_)});
     exec.parallel_for(texels_, UpdateTexelMass{Exec::ptr(order_), Exec::ptr(pair_cell_), texels_, Exec::ptr(pair_flow_),
                                                Exec::ptr(condensing_), Exec::ptr(cond_num_), Exec::ptr(cond_den_), texel.mass});
-    air.add_cell_sources(exec, Exec::ptr(vapor_kg_), nullptr);
+    air.add_vapor_at(exec, cells_.cell(), active, Exec::ptr(vapor_kg_));
     return exact_units_sum(exec, active, Exec::ptr(net_units_));
   }
 
