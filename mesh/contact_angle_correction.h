@@ -77,6 +77,9 @@ class ContactAngleCorrection_HochstetterKolb2017 {
     return xbar_wall_gap < (settings_.reach_factor + 1e-6) * rbar;  // the margin covers rounding
   }
 
+  // How far from xbar a wall is looked for: reach * rbar.
+  double fluid_reach(double rbar) const { return settings_.reach_factor * rbar; }
+
   // How far from x a wall can be and still matter at x: xbar lies within
   // the kernel radius of x, and the wall within reach of xbar.
   double wall_reach(double kernel_radius, double largest_radius) const {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "block_kernel_sums.h"
@@ -58,6 +59,41 @@ double largest_radius(const LiquidParticles& p) {
   return r;
 }
 
+// The slabs holding every wall triangle within reach of some point of the
+// box [lo, hi] (the xbars of a block's nodes), nearest to its centre first;
+// empty when there are too many for the bound to pay.
+std::vector<const WallSlab*> slabs_within_reach(Vec3d lo, Vec3d hi, const RigidWalls& walls, double reach) {
+  constexpr std::size_t kMostSlabs = 32;
+  const Vec3d centre = 0.5 * (lo + hi), half_extent = 0.5 * (hi - lo);
+  reach *= 1 + 1e-6;  // the margin covers rounding
+  std::vector<const WallSlab*> slabs;
+  walls.slabs_near(centre, length(half_extent) + reach, slabs);
+  std::erase_if(slabs, [&](const WallSlab* s) { return distance_to_slab(*s, centre, half_extent) >= reach; });
+  if (slabs.size() > kMostSlabs) return {};
+  std::sort(slabs.begin(), slabs.end(), [&](const WallSlab* a, const WallSlab* b) {
+    return distance_to_slab(*a, centre) < distance_to_slab(*b, centre);
+  });
+  return slabs;
+}
+
+// Whether a wall can be within reach of xbar as far as the slabs tell: its
+// triangles lie in them, and xbar is no closer to a triangle than to its slab.
+bool slabs_allow_wall(const std::vector<const WallSlab*>& slabs, Vec3d xbar, double rbar,
+                      const ContactAngleCorrection_HochstetterKolb2017& correction) {
+  if (slabs.empty()) return true;  // no slab bound for this block
+  for (const WallSlab* s : slabs)
+    if (correction.wall_within_reach(distance_to_slab(*s, xbar), rbar)) return true;
+  return false;
+}
+
+// A node whose xbar may have a wall within reach.
+struct WallCandidate {
+  Vec3d x;
+  std::size_t local, node;
+  LocalFluid fluid;
+  double phi;  // uncorrected
+};
+
 struct WallNode {
   Vec3d x;
   std::size_t local, node;  // in the block's sums, in the grid
@@ -103,10 +139,10 @@ ScalarGrid sample_liquid_field(const LiquidParticles& particles, double kernel_r
       }
       const int ny = b.nodes[1][1] - b.nodes[1][0], nz = b.nodes[2][1] - b.nodes[2][0];
       BlockKernelSums sums = gather_block_kernel_sums(b.lo, ny, nz, box.voxel_size, particles, near, kernel_radius);
-      // Nodes whose xbar has a wall within reach, corrected once the block
-      // has its velocity sums: most blocks near walls have none.
-      std::vector<WallNode> wall_nodes;
-      WallPoint last_wall = centre_wall;  // the next node's xbar_p most likely lies on the same triangle
+      std::vector<WallCandidate> candidates;
+      constexpr double kFar = std::numeric_limits<double>::infinity();
+      Vec3d xbar_lo{kFar, kFar, kFar}, xbar_hi{-kFar, -kFar, -kFar};  // the candidates' xbars
+      double largest_rbar = 0;
       for (int k = b.nodes[2][0]; k < b.nodes[2][1]; ++k)
         for (int j = b.nodes[1][0]; j < b.nodes[1][1]; ++j)
           for (int i = b.nodes[0][0]; i < b.nodes[0][1]; ++i) {
@@ -115,15 +151,29 @@ ScalarGrid sample_liquid_field(const LiquidParticles& particles, double kernel_r
             const LocalFluid f = local_fluid(sums.at(local));
             const double phi = zhu_bridson_distance(f, kernel_radius);
             grid.values[node] = static_cast<float>(phi);
-            if (!result.near_walls) continue;
+            if (!result.near_walls || !f.near_liquid || !correction->may_change_sign(phi, f.mean_radius)) continue;
             const Vec3d x = box.node_position(i, j, k);
-            const double xbar_wall_gap = centre_wall.distance - length(x + f.mean_offset - centre);
+            const Vec3d xbar = x + f.mean_offset;
+            const double xbar_wall_gap = centre_wall.distance - length(xbar - centre);
             if (!correction->wall_within_reach(xbar_wall_gap, f.mean_radius)) continue;
-            const WallPoint wall = correction->fluid_wall(x, f, phi, result.correction, last_wall);
-            if (!wall.found) continue;
-            wall_nodes.push_back({x, local, node, wall});
-            last_wall = wall;
+            candidates.push_back({x, local, node, f, phi});
+            for (int a = 0; a < 3; ++a) xbar_lo[a] = std::min(xbar_lo[a], xbar[a]), xbar_hi[a] = std::max(xbar_hi[a], xbar[a]);
+            largest_rbar = std::max(largest_rbar, f.mean_radius);
           }
+      if (candidates.empty()) return;
+      // Nodes whose xbar has a wall within reach, corrected once the block
+      // has its velocity sums: most blocks near walls have none.
+      const std::vector<const WallSlab*> slabs =
+          slabs_within_reach(xbar_lo, xbar_hi, correction->walls(), correction->fluid_reach(largest_rbar));
+      std::vector<WallNode> wall_nodes;
+      WallPoint last_wall = centre_wall;  // the next node's xbar_p most likely lies on the same triangle
+      for (const WallCandidate& c : candidates) {
+        if (!slabs_allow_wall(slabs, c.x + c.fluid.mean_offset, c.fluid.mean_radius, *correction)) continue;
+        const WallPoint wall = correction->fluid_wall(c.x, c.fluid, c.phi, result.correction, last_wall);
+        if (!wall.found) continue;
+        wall_nodes.push_back({c.x, c.local, c.node, wall});
+        last_wall = wall;
+      }
       if (wall_nodes.empty()) return;
       add_block_velocity_sums(sums, b.lo, box.voxel_size, particles, near, kernel_radius);
       for (const WallNode& w : wall_nodes)

@@ -15,7 +15,9 @@ namespace dp::mesh {
 struct RigidWalls::Embree {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
+  RTCScene slab_scene = nullptr;  // one user primitive per slab, bounded by its triangles' box
   ~Embree() {
+    if (slab_scene) rtcReleaseScene(slab_scene);
     if (scene) rtcReleaseScene(scene);
     if (device) rtcReleaseDevice(device);
   }
@@ -66,6 +68,46 @@ void append_pieces(std::vector<Vec3d>& vertices, Triangle t, int depth, std::vec
   append_pieces(vertices, {middle, b, c}, depth + 1, pieces);
 }
 
+// Embree's bounds, pieces and query point are float: the sphere it searches
+// is widened by a few float ulps of the coordinates (each rounding moves a
+// point by at most one), so that everything within `distance` of x in
+// double, ties included, is offered.
+float widened_radius(Vec3d x, double distance) {
+  const double scale = std::max({std::abs(x.x), std::abs(x.y), std::abs(x.z), distance});
+  return float(distance + 8 * scale * std::numeric_limits<float>::epsilon());
+}
+
+RTCPointQuery point_query(Vec3d x, double distance) {
+  RTCPointQuery query;
+  query.x = float(x.x);
+  query.y = float(x.y);
+  query.z = float(x.z);
+  query.time = 0;
+  query.radius = widened_radius(x, distance);
+  return query;
+}
+
+// The slabs' boxes hold float corners, so they are exact in float.
+void slab_bounds(const RTCBoundsFunctionArguments* args) {
+  const auto& slab = static_cast<const WallSlab*>(args->geometryUserPtr)[args->primID];
+  *args->bounds_o = {float(slab.box_lo.x), float(slab.box_lo.y), float(slab.box_lo.z), 0,
+                     float(slab.box_hi.x), float(slab.box_hi.y), float(slab.box_hi.z), 0};
+}
+
+RTCScene slab_scene(RTCDevice device, std::vector<WallSlab>& slabs) {
+  RTCScene scene = rtcNewScene(device);
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geometry, unsigned(slabs.size()));
+  rtcSetGeometryUserData(geometry, slabs.data());
+  rtcSetGeometryBoundsFunction(geometry, slab_bounds, nullptr);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcCommitScene(scene);
+  return scene;
+}
+
 }  // namespace
 
 RigidWalls::RigidWalls(const std::vector<io::TriangleMesh>& rigids) : embree_(std::make_unique<Embree>()) {
@@ -106,6 +148,12 @@ RigidWalls::RigidWalls(const std::vector<io::TriangleMesh>& rigids) : embree_(st
   rtcSetSceneFlags(embree_->scene, RTC_SCENE_FLAG_ROBUST);
   rtcCommitScene(embree_->scene);
   throw_on_embree_error(embree_->device, "building the rigid scene");
+  for (const Rigid& rigid : rigids_) {
+    const std::vector<WallSlab> slabs = coplanar_slabs(rigid.corners, rigid.normal);
+    slabs_.insert(slabs_.end(), slabs.begin(), slabs.end());
+  }
+  embree_->slab_scene = slab_scene(embree_->device, slabs_);
+  throw_on_embree_error(embree_->device, "building the wall slabs");
 }
 
 RigidWalls::~RigidWalls() = default;
@@ -144,14 +192,7 @@ struct RigidWalls::Search {
     return true;
   }
 
-  // Embree's bounds, pieces and query point are float: the sphere it
-  // searches is widened by a few float ulps of the coordinates (each
-  // rounding moves a point by at most one), so that every triangle within
-  // `distance` in double, ties included, is offered.
-  float query_radius(double distance) const {
-    const double scale = std::max({std::abs(x.x), std::abs(x.y), std::abs(x.z), distance});
-    return float(distance + 8 * scale * std::numeric_limits<float>::epsilon());
-  }
+  float query_radius(double distance) const { return widened_radius(x, distance); }
 };
 
 WallPoint RigidWalls::closest(Vec3d x, double max_distance, const WallPoint* hint) const {
@@ -161,12 +202,7 @@ WallPoint RigidWalls::closest(Vec3d x, double max_distance, const WallPoint* hin
   // Offering the hint first only shrinks the sphere Embree has to search.
   if (hint && hint->found) search.offer(hint->rigid, hint->triangle);
 
-  RTCPointQuery query;
-  query.x = float(x.x);
-  query.y = float(x.y);
-  query.z = float(x.z);
-  query.time = 0;
-  query.radius = search.query_radius(search.best.distance);
+  RTCPointQuery query = point_query(x, search.best.distance);
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   rtcPointQuery(embree_->scene, &query, &context, [](RTCPointQueryFunctionArguments* args) -> bool {
@@ -178,6 +214,22 @@ WallPoint RigidWalls::closest(Vec3d x, double max_distance, const WallPoint* hin
     return true;
   }, &search);
   return search.best;
+}
+
+void RigidWalls::slabs_near(Vec3d x, double radius, std::vector<const WallSlab*>& out) const {
+  if (slabs_.empty()) return;
+  struct Found {
+    const std::vector<WallSlab>& slabs;
+    std::vector<const WallSlab*>& out;
+  } found{slabs_, out};
+  RTCPointQuery query = point_query(x, radius);
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(embree_->slab_scene, &query, &context, [](RTCPointQueryFunctionArguments* args) -> bool {
+    auto& f = *static_cast<Found*>(args->userPtr);
+    f.out.push_back(&f.slabs[args->primID]);
+    return false;
+  }, &found);
 }
 
 }  // namespace dp::mesh

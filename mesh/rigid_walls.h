@@ -10,6 +10,7 @@
 
 #include "triangle_mesh.h"
 #include "vec3d.h"
+#include "wall_slabs.h"
 
 namespace dp::mesh {
 
@@ -38,6 +39,10 @@ class RigidWalls {
   // lets the search start from its triangle's distance to x.
   WallPoint closest(Vec3d x, double max_distance, const WallPoint* hint = nullptr) const;
 
+  // The slabs (wall_slabs.h) that hold every wall triangle within `radius`
+  // of x, appended to `out`; a few more may come along.
+  void slabs_near(Vec3d x, double radius, std::vector<const WallSlab*>& out) const;
+
   bool empty() const { return rigids_.empty(); }
   std::size_t rigid_count() const { return rigids_.size(); }
 
@@ -52,6 +57,7 @@ class RigidWalls {
   struct Search;
 
   std::vector<Rigid> rigids_;
+  std::vector<WallSlab> slabs_;  // of all rigids' triangles
   std::unique_ptr<Embree> embree_;
 };
 
