@@ -64,6 +64,35 @@ DP_HD inline float prolongation_weight(const PoissonLevel& coarse, int axis, int
   return prolongation_weight(fine, coarse_index, nc, coarse.faces.open(axis, 0), coarse.faces.open(axis, 1));
 }
 
+// The near and far coarse cell of fine cell `fine` along one axis (the far
+// one may lie outside the grid).
+DP_HD inline void coarse_pair(int fine, int* pair) {
+  pair[0] = fine >> 1;
+  pair[1] = (fine & 1) ? pair[0] + 1 : pair[0] - 1;
+}
+
+// Calls f(weight, coarse cell index) for each coarse cell inside the grid
+// that fine cell (i, j, k) takes a share of, in a fixed order.
+template <class F>
+DP_HD void for_each_prolongation_term(const PoissonLevel& coarse, int i, int j, int k, const F& f) {
+  int ci[2], cj[2], ck[2];
+  coarse_pair(i, ci);
+  coarse_pair(j, cj);
+  coarse_pair(k, ck);
+  for (int c = 0; c < 2; ++c) {
+    if (ck[c] < 0 || ck[c] >= coarse.nz) continue;
+    const float wk = prolongation_weight(coarse, 2, k, ck[c]);
+    for (int b = 0; b < 2; ++b) {
+      if (cj[b] < 0 || cj[b] >= coarse.ny) continue;
+      const float wjk = wk * prolongation_weight(coarse, 1, j, cj[b]);
+      for (int a = 0; a < 2; ++a) {
+        if (ci[a] < 0 || ci[a] >= coarse.nx) continue;
+        f(wjk * prolongation_weight(coarse, 0, i, ci[a]), coarse.index(ci[a], cj[b], ck[c]));
+      }
+    }
+  }
+}
+
 // Per fine cell, the prolongation's weights over all coarse cells in the grid
 // divided by those over the unknown ones: a coarse cell that is no unknown
 // (all its children rigid or liquid) holds no error, and weighting it in as
@@ -74,24 +103,11 @@ struct ProlongationScale {
   PoissonLevel fine, coarse;
   float* scale;
   DP_HD void operator()(int i, int j, int k) const {
-    const int ci[2] = {i >> 1, (i & 1) ? (i >> 1) + 1 : (i >> 1) - 1};
-    const int cj[2] = {j >> 1, (j & 1) ? (j >> 1) + 1 : (j >> 1) - 1};
-    const int ck[2] = {k >> 1, (k & 1) ? (k >> 1) + 1 : (k >> 1) - 1};
     float all = 0.0f, unknown = 0.0f;
-    for (int c = 0; c < 2; ++c) {
-      if (ck[c] < 0 || ck[c] >= coarse.nz) continue;
-      const float wk = prolongation_weight(coarse, 2, k, ck[c]);
-      for (int b = 0; b < 2; ++b) {
-        if (cj[b] < 0 || cj[b] >= coarse.ny) continue;
-        const float wjk = wk * prolongation_weight(coarse, 1, j, cj[b]);
-        for (int a = 0; a < 2; ++a) {
-          if (ci[a] < 0 || ci[a] >= coarse.nx) continue;
-          const float w = wjk * prolongation_weight(coarse, 0, i, ci[a]);
-          all += w;
-          if (coarse.unknown[coarse.index(ci[a], cj[b], ck[c])]) unknown += w;
-        }
-      }
-    }
+    for_each_prolongation_term(coarse, i, j, k, [&](float w, std::size_t c) {
+      all += w;
+      if (coarse.unknown[c]) unknown += w;
+    });
     // An unknown fine cell's own coarse cell is unknown, so `unknown` > 0 there.
     scale[fine.index(i, j, k)] = unknown > 0.0f ? all / unknown : 0.0f;
   }
@@ -181,12 +197,13 @@ struct ProlongAndAdd {
   DP_HD void operator()(int i, int j, int k) const {
     const std::size_t f = fine.index(i, j, k);
     if (!fine.unknown[f]) return;
-    const int ci[2] = {i >> 1, (i & 1) ? (i >> 1) + 1 : (i >> 1) - 1};
-    const int cj[2] = {j >> 1, (j & 1) ? (j >> 1) + 1 : (j >> 1) - 1};
-    const int ck[2] = {k >> 1, (k & 1) ? (k >> 1) + 1 : (k >> 1) - 1};
+    int ci[2], cj[2], ck[2];
+    coarse_pair(i, ci);
+    coarse_pair(j, cj);
+    coarse_pair(k, ck);
     const bool interior = ci[0] >= 1 && ci[0] + 1 < coarse.nx && cj[0] >= 1 && cj[0] + 1 < coarse.ny && ck[0] >= 1 &&
                           ck[0] + 1 < coarse.nz;
-    x[f] += scale[f] * (interior ? interior_sum(ci, cj, ck) : boundary_sum(i, j, k, ci, cj, ck));
+    x[f] += scale[f] * (interior ? interior_sum(ci, cj, ck) : boundary_sum(i, j, k));
   }
 
   // All eight coarse cells exist: the terms and order of boundary_sum,
@@ -205,21 +222,9 @@ struct ProlongAndAdd {
     return s;
   }
 
-  // Fine cell (i, j, k) from its coarse cells ci, cj, ck (near, far per axis).
-  DP_HD float boundary_sum(int i, int j, int k, const int* ci, const int* cj, const int* ck) const {
+  DP_HD float boundary_sum(int i, int j, int k) const {
     float s = 0.0f;
-    for (int c = 0; c < 2; ++c) {
-      if (ck[c] < 0 || ck[c] >= coarse.nz) continue;
-      const float wk = prolongation_weight(coarse, 2, k, ck[c]);
-      for (int b = 0; b < 2; ++b) {
-        if (cj[b] < 0 || cj[b] >= coarse.ny) continue;
-        const float wjk = wk * prolongation_weight(coarse, 1, j, cj[b]);
-        for (int a = 0; a < 2; ++a) {
-          if (ci[a] < 0 || ci[a] >= coarse.nx) continue;
-          s += wjk * prolongation_weight(coarse, 0, i, ci[a]) * e[coarse.index(ci[a], cj[b], ck[c])];
-        }
-      }
-    }
+    for_each_prolongation_term(coarse, i, j, k, [&](float w, std::size_t c) { s += w * e[c]; });
     return s;
   }
 };
