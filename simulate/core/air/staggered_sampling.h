@@ -62,13 +62,6 @@ struct Lattice {
   DP_HD std::size_t size() const { return static_cast<std::size_t>(nx) * ny * nz; }
   DP_HD std::size_t index(int i, int j, int k) const { return (static_cast<std::size_t>(k) * ny + j) * nx + i; }
   DP_HD T at(int i, int j, int k) const { return value[index(i, j, k)]; }
-  // The grid point of value[n].
-  DP_HD GridPoint point(std::size_t n) const {
-    return GridPoint{static_cast<int>(n % nx), static_cast<int>((n / nx) % ny),
-                     static_cast<int>(n / (static_cast<std::size_t>(nx) * ny)), shift};
-  }
-  DP_HD GridPoint point(int i, int j, int k) const { return GridPoint{i, j, k, shift}; }
-
   // Where p falls along one axis of this lattice: the lower corner and the
   // weight of the upper one, clamped to the lattice.
   DP_HD Corner corner(int axis, const GridPoint& p) const {
@@ -140,7 +133,6 @@ struct FaceVelocity {
     const Corner z0 = Corner::locate(p.k, p.offset.z - 0.0f, w.nz), z5 = Corner::locate(p.k, p.offset.z - 0.5f, u.nz);
     return Vec3{u.sample(x0, y5, z5), v.sample(x5, y0, z5), w.sample(x5, y5, z0)};
   }
-  DP_HD const Lattice<float>& component(int axis) const { return axis == 0 ? u : (axis == 1 ? v : w); }
 };
 
 DP_HD inline FaceVelocity face_velocity(const MacGrid& g, const float* u, const float* v, const float* w) {
