@@ -119,9 +119,9 @@ class Simulation {
  public:
   virtual ~Simulation() = default;
   virtual StepReport step() = 0;  // throws InstabilityError
-  // Steps, shortening the last step so that time() lands on `time` exactly.
-  // Steps until `time`; `on_step`, when given, sees each step's report
-  // (for the per-step timing table).
+  // Steps until time() lands on `time` exactly, in equal steps no longer
+  // than the time-step rule allows (never a sliver at the end); `on_step`,
+  // when given, sees each step's report (for the per-step timing table).
   virtual void advance_to(double time, const std::function<void(const StepReport&)>& on_step = {}) = 0;
   virtual ParticleSnapshot particles() const = 0;
   virtual std::vector<Vec3> rigid_particles() const = 0;

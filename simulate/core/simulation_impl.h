@@ -117,13 +117,21 @@ class SimulationImpl final : public Simulation {
 
   StepReport step() override { return step_with(next_time_step()); }
 
+  // The next step of `remaining` seconds split into equal steps of at most
+  // `longest`. Cutting only the last step short can leave a sliver (1.6 us
+  // after 1 ms steps), and PCISPH removes the density error left by the
+  // previous step within the step it is given: pressures grow as 1/dt^2 and
+  // the sliver threw a drop's rim particles off at 5 m/s.
+  static float step_towards(double remaining, float longest) {
+    const double steps = std::ceil(remaining / static_cast<double>(longest));
+    return static_cast<float>(remaining / std::max(steps, 1.0));
+  }
+
   void advance_to(double time, const std::function<void(const StepReport&)>& on_step) override {
     // Steps end on frame times exactly; a remainder below a nanosecond is
     // rounding of earlier steps, not a step.
     while (time - time_ > 1e-9) {
-      float dt = next_time_step();
-      if (time_ + dt > time - 1e-9) dt = static_cast<float>(time - time_);
-      const StepReport& report = step_with(dt);
+      const StepReport& report = step_with(step_towards(time - time_, next_time_step()));
       if (on_step) on_step(report);
     }
   }
