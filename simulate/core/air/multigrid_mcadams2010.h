@@ -235,6 +235,12 @@ struct CopyBytes {
   DP_HD void operator()(std::size_t i) const { out[i] = in[i]; }
 };
 
+struct BytesDiffer {
+  const std::uint8_t* a;
+  const std::uint8_t* b;
+  DP_HD bool operator()(std::size_t i) const { return a[i] != b[i]; }
+};
+
 struct ClearFloats {
   float* x;
   DP_HD void operator()(std::size_t i) const { x[i] = 0.0f; }
@@ -278,15 +284,20 @@ class MultigridPreconditioner {
       nz = (nz + 1) / 2;
     }
     faces_ = faces;
+    built_ = false;
   }
 
   int level_count() const { return static_cast<int>(levels_.size()); }
   const Buffer<std::uint8_t>& unknowns() const { return levels_[0].unknown; }
 
-  // Level 0's unknowns are copied; coarser ones follow by coarsening.
+  // Level 0's unknowns are copied; coarser ones follow by coarsening. The
+  // cells change only where liquid moves between them, so most steps find
+  // the hierarchy already built for them.
   void set_unknowns(const Exec& exec, const Buffer<std::uint8_t>& fine_unknown) {
+    const std::size_t n = fine_unknown.size();
+    if (built_ && exec.find_first(n, BytesDiffer{Exec::ptr(fine_unknown), Exec::ptr(levels_[0].unknown)}) == n) return;
     // Copied in place: a recorded solve (CUDA graph) holds these buffers' addresses.
-    exec.parallel_for(fine_unknown.size(), CopyBytes{Exec::ptr(fine_unknown), Exec::ptr(levels_[0].unknown)});
+    exec.parallel_for(n, CopyBytes{Exec::ptr(fine_unknown), Exec::ptr(levels_[0].unknown)});
     for (std::size_t l = 0; l < levels_.size(); ++l) {
       Level& c = levels_[l];
       if (l > 0) exec.parallel_for(c.unknown.size(), CoarsenUnknown{view(l - 1), c.nx, c.ny, c.nz, Exec::ptr(c.unknown)});
@@ -296,6 +307,7 @@ class MultigridPreconditioner {
       Level& f = levels_[l];
       exec.parallel_for_3d(f.nx, f.ny, f.nz, ProlongationScale{view(l), view(l + 1), Exec::ptr(f.prolongation_scale)});
     }
+    built_ = true;
   }
 
   // z = M^-1 r, one V-cycle.
@@ -345,6 +357,7 @@ class MultigridPreconditioner {
 
   std::vector<Level> levels_;
   DomainFaces faces_;
+  bool built_ = false;  // set_unknowns has run since resize
 };
 
 }  // namespace dp
