@@ -12,10 +12,16 @@
 namespace dp {
 namespace {
 
-TEST(Hydrostatics, SettledColumnIsIncompressibleAndPressureIsRhoGDepth) {
-  const float s = 0.01f;
-  const int nx = 8, ny = 24, nz = 8;
+// A block of nx x ny x nz liquid particles at spacing s in an open tank of
+// inner size lx x ly x lz.
+struct ColumnInTank {
   SimulationSetup setup;
+  float lx, ly, lz;
+};
+
+ColumnInTank column_in_tank(float s, int nx, int ny, int nz) {
+  ColumnInTank c;
+  SimulationSetup& setup = c.setup;
   setup.particle_spacing = s;
   setup.liquid.xsph_epsilon = 0.1f;  // damps the settling; the state at rest does not depend on it
   setup.liquid.boundary_friction = 0.1f;
@@ -23,11 +29,19 @@ TEST(Hydrostatics, SettledColumnIsIncompressibleAndPressureIsRhoGDepth) {
   // single boundary layer (Akinci 2012) adds about 6 % density per wall, and
   // removing that in the first step would take a jolt.
   const float gap = 1.2f * s;
-  const float lx = (nx - 1) * s + 2 * gap, lz = (nz - 1) * s + 2 * gap, ly = (ny + 6) * s;
-  setup.rigid_position = test::open_tank(lx, ly, lz, s);
+  c.lx = (nx - 1) * s + 2 * gap, c.lz = (nz - 1) * s + 2 * gap, c.ly = (ny + 6) * s;
+  setup.rigid_position = test::open_tank(c.lx, c.ly, c.lz, s);
   test::add_block(setup, Vec3{gap, gap, gap}, nx, ny, nz);
   setup.domain_min = Vec3{-0.05f, -0.05f, -0.05f};
-  setup.domain_max = Vec3{lx + 0.05f, ly + 0.05f, lz + 0.05f};
+  setup.domain_max = Vec3{c.lx + 0.05f, c.ly + 0.05f, c.lz + 0.05f};
+  return c;
+}
+
+TEST(Hydrostatics, SettledColumnIsIncompressibleAndPressureIsRhoGDepth) {
+  const float s = 0.01f;
+  const ColumnInTank column = column_in_tank(s, 8, 24, 8);
+  const SimulationSetup& setup = column.setup;
+  const float lx = column.lx, lz = column.lz;
 
   auto sim = make_simulation(ExecutionConfig{Device::Cpu, 0}, setup);
   sim->advance_to(1.5);
@@ -117,20 +131,9 @@ TEST(Hydrostatics, SettledColumnIsIncompressibleAndPressureIsRhoGDepth) {
 // sliver throws particles off (a drop's rim at 5 m/s in the drop_notex
 // scene). advance_to takes equal steps instead.
 TEST(Hydrostatics, FrameEndingJustAfterAStepLeavesTheColumnAtRest) {
-  const float s = 0.01f;
-  const int nx = 6, ny = 10, nz = 6;
-  SimulationSetup setup;
-  setup.particle_spacing = s;
-  setup.liquid.xsph_epsilon = 0.1f;
-  setup.liquid.boundary_friction = 0.1f;
+  SimulationSetup setup = column_in_tank(0.01f, 6, 10, 6).setup;
   setup.time_step.mode = TimeStepMode::Fixed;
   setup.time_step.max_step = 1e-3f;
-  const float gap = 1.2f * s;
-  const float lx = (nx - 1) * s + 2 * gap, lz = (nz - 1) * s + 2 * gap, ly = (ny + 6) * s;
-  setup.rigid_position = test::open_tank(lx, ly, lz, s);
-  test::add_block(setup, Vec3{gap, gap, gap}, nx, ny, nz);
-  setup.domain_min = Vec3{-0.05f, -0.05f, -0.05f};
-  setup.domain_max = Vec3{lx + 0.05f, ly + 0.05f, lz + 0.05f};
   auto sim = make_simulation(ExecutionConfig{Device::Cpu, 0}, setup);
   const auto largest_speed = [&] {
     float v = 0;
