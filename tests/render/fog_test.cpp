@@ -39,7 +39,10 @@ class render_fog : public ::testing::Test {
     mirror.fogged_roughness = 0.5;
     mirror.wet_roughness = 0;
     mirror.wet_darkening = 0.5;
-    scene_.simulation.rigids.push_back({"mirror", frames_ / "not-used.obj"});
+    io::RigidObject rigid;
+    rigid.name = "mirror";
+    rigid.mesh = frames_ / "not-used.obj";
+    scene_.simulation.rigids.push_back(rigid);
     scene_.render.materials["mirror"] = mirror;
     scene_.render.rigid_material["mirror"] = "mirror";
     settings_.width = settings_.height = 48;

@@ -17,11 +17,10 @@ struct MacCormackCorrect {
   const T* backward;  // phi~
   T* out;
 
-  DP_HD void operator()(int i, int j, int k) const { correct(source.index(i, j, k), GridPoint{i, j, k, mac_shift<Points>()}); }
-
-  DP_HD void correct(std::size_t n, const GridPoint& p) const {
+  DP_HD void operator()(int i, int j, int k) const {
+    const std::size_t n = source.index(i, j, k);
     T lo, hi;
-    source.sample(trace_back(velocity, p, cells_per_speed), &lo, &hi);
+    source.sample(trace_back<Points>(velocity, i, j, k, cells_per_speed), &lo, &hi);
     const T v = forward[n] + static_cast<T>(0.5) * (source.value[n] - backward[n]);
     out[n] = v < lo ? lo : (v > hi ? hi : v);
   }

@@ -10,9 +10,13 @@ namespace dp {
 
 // Where the fluid at p was a time ago; `cells_per_speed` = dt / dx, so that
 // velocity times it is a displacement in cells (negative: traces forwards).
-DP_HD inline GridPoint trace_back(const FaceVelocity& velocity, GridPoint p, float cells_per_speed) {
+// p is point (i, j, k) of lattice `Points` (mac_shift), where the first
+// velocity sample needs no corner search (LatticePointVelocity).
+template <int Points>
+DP_HD GridPoint trace_back(const FaceVelocity& velocity, int i, int j, int k, float cells_per_speed) {
+  GridPoint p{i, j, k, mac_shift<Points>()};
   GridPoint mid = p;
-  mid.offset -= (0.5f * cells_per_speed) * velocity.at(p);
+  mid.offset -= (0.5f * cells_per_speed) * LatticePointVelocity<Points>::at(velocity, i, j, k);
   p.offset -= cells_per_speed * velocity.at(mid);
   return p;
 }
@@ -27,8 +31,7 @@ struct AdvectSemiLagrangian {
   T* out;
 
   DP_HD void operator()(int i, int j, int k) const {
-    const GridPoint p{i, j, k, mac_shift<Points>()};
-    out[source.index(i, j, k)] = source.sample(trace_back(velocity, p, cells_per_speed));
+    out[source.index(i, j, k)] = source.sample(trace_back<Points>(velocity, i, j, k, cells_per_speed));
   }
 };
 

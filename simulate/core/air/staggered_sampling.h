@@ -76,6 +76,20 @@ struct Lattice {
   }
   // The same from corners already located (FaceVelocity shares them between
   // components): the eight values are reached by offsets from one index.
+  // The same at a point whose lower corner (i, j, k) and weights are known
+  // at compile time, its upper corners inside the lattice: Wx, Wy, Wz are 1
+  // for weight 1/2 and 0 for weight 0, where a lerp would give its first
+  // value (a + 0 (b - a) = a for finite values) and the upper layer is not
+  // read. The terms and their order are those of the general sample.
+  template <int Wx, int Wy, int Wz>
+  DP_HD T sample_fixed(int i, int j, int k) const {
+    const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
+    const std::size_t c = index(i, j, k);
+    const T y0 = along_y<Wx, Wy>(c, row);
+    if constexpr (Wz == 0) return y0;
+    else return lerp(y0, along_y<Wx, Wy>(c + slab, row), 0.5f);
+  }
+
   DP_HD T sample(Corner x, Corner y, Corner z, T* lo = nullptr, T* hi = nullptr) const {
     const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
     const std::size_t c = index(x.i, y.i, z.i);
@@ -91,6 +105,16 @@ struct Lattice {
   }
 
  private:
+  template <int Wx>
+  DP_HD T along_x(std::size_t c) const {
+    if constexpr (Wx == 0) return value[c];
+    else return lerp(value[c], value[c + 1], 0.5f);
+  }
+  template <int Wx, int Wy>
+  DP_HD T along_y(std::size_t c, std::size_t row) const {
+    if constexpr (Wy == 0) return along_x<Wx>(c);
+    else return lerp(along_x<Wx>(c), along_x<Wx>(c + row), 0.5f);
+  }
   DP_HD static T min2(T a, T b) { return b < a ? b : a; }
   DP_HD static T min8(T a, T b, T c, T d, T e, T f, T g, T h) {
     return min2(min2(min2(a, b), min2(c, d)), min2(min2(e, f), min2(g, h)));
@@ -132,6 +156,40 @@ struct FaceVelocity {
     const Corner y0 = Corner::locate(p.j, p.offset.y - 0.0f, v.ny), y5 = Corner::locate(p.j, p.offset.y - 0.5f, u.ny);
     const Corner z0 = Corner::locate(p.k, p.offset.z - 0.0f, w.nz), z5 = Corner::locate(p.k, p.offset.z - 0.5f, u.nz);
     return Vec3{u.sample(x0, y5, z5), v.sample(x5, y0, z5), w.sample(x5, y5, z0)};
+  }
+};
+
+// The velocity at point (i, j, k) of lattice `Points`, as FaceVelocity::at
+// gives it. Component C's corners along each axis lie half a cell below the
+// point (weight 1/2), at it (weight 0), or half a cell above (weight 1/2):
+// constants, so where every corner lies inside, sample_fixed serves.
+template <int Points>
+struct LatticePointVelocity {
+  // Half cells from component C's lattice to the points along an axis: -1, 0 or 1.
+  template <int C, int Axis>
+  DP_HD static constexpr int half_cells() {
+    return (Points == Axis ? 0 : 1) - (C == Axis ? 0 : 1);
+  }
+  template <int C, int Axis>
+  DP_HD static constexpr int weight() { return half_cells<C, Axis>() != 0 ? 1 : 0; }
+  template <int C, int Axis>
+  DP_HD static constexpr int lower() { return half_cells<C, Axis>() < 0 ? -1 : 0; }
+
+  template <int C>
+  DP_HD static bool inside(const Lattice<float>& l, int i, int j, int k) {
+    const int a = i + lower<C, 0>(), b = j + lower<C, 1>(), c = k + lower<C, 2>();
+    return a >= 0 && b >= 0 && c >= 0 && a + 1 < l.nx && b + 1 < l.ny && c + 1 < l.nz;
+  }
+  template <int C>
+  DP_HD static float component(const Lattice<float>& l, int i, int j, int k) {
+    return l.template sample_fixed<weight<C, 0>(), weight<C, 1>(), weight<C, 2>()>(i + lower<C, 0>(), j + lower<C, 1>(),
+                                                                                    k + lower<C, 2>());
+  }
+
+  DP_HD static Vec3 at(const FaceVelocity& velocity, int i, int j, int k) {
+    if (inside<0>(velocity.u, i, j, k) && inside<1>(velocity.v, i, j, k) && inside<2>(velocity.w, i, j, k))
+      return Vec3{component<0>(velocity.u, i, j, k), component<1>(velocity.v, i, j, k), component<2>(velocity.w, i, j, k)};
+    return velocity.at(GridPoint{i, j, k, mac_shift<Points>()});
   }
 };
 
