@@ -31,7 +31,7 @@ struct FrameEntry {
   std::string air_file{};      // air.%04d.vdb; empty: no air phase
   nlohmann::json air_vapor{};  // the air's vapor ledger (kg); null: no air phase
   nlohmann::json water{};      // the water ledger (kg, simulate/core/coupling/water_ledger.h); null: none
-  std::map<std::string, std::string> surface_files;  // rigid name -> surface_NAME.%04d.exr
+  std::map<std::string, std::string> surface_files{};  // rigid name -> surface_NAME.%04d.exr
 };
 
 // A textured rigid (docs/file-formats.md): its atlas mesh and texture size.

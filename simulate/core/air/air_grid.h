@@ -155,7 +155,7 @@ class AirGrid {
 
   // Alg. 1 line 7, from the liquid particles in their neighbour grid.
   void classify(const Exec& exec, const GridView& liquid) {
-    exec.parallel_for(grid_.cell_count(), ClassifyCells{grid_, liquid, Exec::ptr(static_kind_), Exec::ptr(kind_)});
+    exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ClassifyCells{grid_, liquid, Exec::ptr(static_kind_), Exec::ptr(kind_)});
   }
 
   // Alg. 1 lines 8-11.
@@ -195,17 +195,16 @@ class AirGrid {
   // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt.
   void add_forces(const Exec& exec, float dt) {
     for (int a = 0; a < 3; ++a)
-      exec.parallel_for(u_[a].size(), AddBuoyancy{grid_, a, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt,
+      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), AddBuoyancy{grid_, a, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt,
                                                   Exec::ptr(u_[a])});
     if (settings_.vorticity_epsilon > 0) {
-      const std::size_t n = grid_.cell_count();
-      exec.parallel_for(n, CellCentredVelocity{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]),
+      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, CellCentredVelocity{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]),
                                                Exec::ptr(cell_velocity_)});
-      exec.parallel_for(n, ComputeVorticity{cells(), Exec::ptr(cell_velocity_), Exec::ptr(omega_), Exec::ptr(omega_norm_)});
-      exec.parallel_for(n, ComputeConfinementForce{cells(), Exec::ptr(omega_), Exec::ptr(omega_norm_),
+      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeVorticity{cells(), Exec::ptr(cell_velocity_), Exec::ptr(omega_), Exec::ptr(omega_norm_)});
+      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeConfinementForce{cells(), Exec::ptr(omega_), Exec::ptr(omega_norm_),
                                                    settings_.vorticity_epsilon, Exec::ptr(force_)});
       for (int a = 0; a < 3; ++a)
-        exec.parallel_for(u_[a].size(), AddCellForceToFaces{grid_, a, Exec::ptr(force_), dt, Exec::ptr(u_[a])});
+        exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), AddCellForceToFaces{grid_, a, Exec::ptr(force_), dt, Exec::ptr(u_[a])});
     }
     enforce_boundaries(exec);
   }
@@ -261,15 +260,14 @@ class AirGrid {
     if (!(d_max > 0)) return 0;
     const int substeps = number > kMaxDiffusionNumber ? static_cast<int>(std::ceil(number / kMaxDiffusionNumber)) : 1;
     const double h = static_cast<double>(dt) / substeps;
-    const std::size_t n = grid_.cell_count();
     for (int s = 0; s < substeps; ++s) {
       if (settings_.vapor_diffusivity > 0) {
-        exec.parallel_for(n, DiffuseExplicit<double>{cells(), Exec::ptr(vapor_), settings_.vapor_diffusivity * h / dx2,
+        exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, DiffuseExplicit<double>{cells(), Exec::ptr(vapor_), settings_.vapor_diffusivity * h / dx2,
                                                      Exec::ptr(vapor_tmp_)});
         vapor_.swap(vapor_tmp_);
       }
       if (settings_.heat_diffusivity > 0) {
-        exec.parallel_for(n, DiffuseExplicit<float>{cells(), Exec::ptr(temperature_excess_), settings_.heat_diffusivity * h / dx2,
+        exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, DiffuseExplicit<float>{cells(), Exec::ptr(temperature_excess_), settings_.heat_diffusivity * h / dx2,
                                                     Exec::ptr(temperature_tmp_)});
         temperature_excess_.swap(temperature_tmp_);
       }
@@ -284,7 +282,7 @@ class AirGrid {
     enforce_boundaries(exec);
     exec.parallel_for(n, MarkAirUnknowns{Exec::ptr(kind_), Exec::ptr(unknown_)});
     pcg_.set_unknowns(exec, unknown_);
-    exec.parallel_for(n, ComputeProjectionRhs{cells(), Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), Exec::ptr(rhs_)});
+    exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeProjectionRhs{cells(), Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), Exec::ptr(rhs_)});
     const PcgResult result = pcg_.solve(exec, rhs_, phi_, settings_.projection_tolerance, settings_.projection_max_iterations);
     for (int a = 0; a < 3; ++a)
       exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), SubtractPressureGradient{cells(), a, Exec::ptr(phi_), Exec::ptr(u_[a])});

@@ -32,11 +32,10 @@ struct AddBuoyancy {
   float dt;
   float* u;
 
-  DP_HD void operator()(std::size_t f) const {
+  DP_HD void operator()(int i, int j, int k) const {
     const float up = p.up[axis];
     if (up == 0.0f) return;
-    int i, j, k;
-    grid.face_coords(axis, f, i, j, k);
+    const std::size_t f = grid.face(axis, i, j, k);
     const int a = (axis == 0 ? i : (axis == 1 ? j : k));
     const int lo = a > 0 ? a - 1 : 0, hi = a < grid.n(axis) ? a : a - 1;
     const std::size_t cl = grid.cell(axis == 0 ? lo : i, axis == 1 ? lo : j, axis == 2 ? lo : k);

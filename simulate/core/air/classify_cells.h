@@ -92,14 +92,13 @@ struct ClassifyCells {
   const std::uint8_t* static_kind;
   std::uint8_t* kind;
 
-  DP_HD void operator()(std::size_t c) const {
+  DP_HD void operator()(int i, int j, int k) const {
+    const std::size_t c = grid.cell(i, j, k);
     const std::uint8_t s = static_kind[c];
     if (s != kAirCell) {
       kind[c] = s;
       return;
     }
-    int i, j, k;
-    grid.cell_coords(c, i, j, k);
     const Vec3 lo = grid.origin + grid.dx * Vec3{static_cast<float>(i), static_cast<float>(j), static_cast<float>(k)};
     kind[c] = any_particle_in_box(liquid, lo, lo + Vec3{grid.dx, grid.dx, grid.dx}) ? kLiquidCell : kAirCell;
   }

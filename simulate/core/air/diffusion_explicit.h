@@ -19,14 +19,13 @@ struct DiffuseExplicit {
   double rate;  // D dt / dx^2
   T* out;
 
-  DP_HD void operator()(std::size_t c) const {
+  DP_HD void operator()(int i, int j, int k) const {
+    const std::size_t c = cells.grid.cell(i, j, k);
     const std::uint8_t kind = cells.kind[c];
     if (!carries_air(kind)) {
       out[c] = in[c];
       return;
     }
-    int i, j, k;
-    cells.grid.cell_coords(c, i, j, k);
     double sum = 0.0;
     for (int axis = 0; axis < 3; ++axis)
       for (int side = 0; side < 2; ++side) {

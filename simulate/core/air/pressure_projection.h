@@ -30,13 +30,12 @@ struct ComputeProjectionRhs {
   const float* v;
   const float* w;
   float* b;
-  DP_HD void operator()(std::size_t c) const {
+  DP_HD void operator()(int i, int j, int k) const {
+    const std::size_t c = cells.grid.cell(i, j, k);
     if (cells.kind[c] != kAirCell) {
       b[c] = 0.0f;
       return;
     }
-    int i, j, k;
-    cells.grid.cell_coords(c, i, j, k);
     b[c] = -cells.grid.dx * net_outflow(cells.grid, u, v, w, i, j, k);
   }
 };

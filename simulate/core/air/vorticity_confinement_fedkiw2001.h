@@ -19,7 +19,10 @@ struct CellCentredVelocity {
   DP_HD void operator()(std::size_t c) const {
     int i, j, k;
     grid.cell_coords(c, i, j, k);
-    out[c] = Vec3{0.5f * (u[grid.face(0, i, j, k)] + u[grid.face(0, i + 1, j, k)]),
+    (*this)(i, j, k);
+  }
+  DP_HD void operator()(int i, int j, int k) const {
+    out[grid.cell(i, j, k)] = Vec3{0.5f * (u[grid.face(0, i, j, k)] + u[grid.face(0, i + 1, j, k)]),
                   0.5f * (v[grid.face(1, i, j, k)] + v[grid.face(1, i, j + 1, k)]),
                   0.5f * (w[grid.face(2, i, j, k)] + w[grid.face(2, i, j, k + 1)])};
   }
@@ -43,9 +46,8 @@ struct ComputeVorticity {
   const Vec3* velocity;  // cell-centred
   Vec3* omega;
   float* omega_norm;
-  DP_HD void operator()(std::size_t c) const {
-    int i, j, k;
-    cells.grid.cell_coords(c, i, j, k);
+  DP_HD void operator()(int i, int j, int k) const {
+    const std::size_t c = cells.grid.cell(i, j, k);
     if (cells.kind[c] != kAirCell) {
       omega[c] = Vec3{};
       omega_norm[c] = 0;
@@ -65,9 +67,8 @@ struct ComputeConfinementForce {
   const float* omega_norm;
   float epsilon;
   Vec3* force;
-  DP_HD void operator()(std::size_t c) const {
-    int i, j, k;
-    cells.grid.cell_coords(c, i, j, k);
+  DP_HD void operator()(int i, int j, int k) const {
+    const std::size_t c = cells.grid.cell(i, j, k);
     force[c] = Vec3{};
     if (cells.kind[c] != kAirCell) return;
     const Vec3 grad{air_derivative(cells, omega_norm, i, j, k, 0), air_derivative(cells, omega_norm, i, j, k, 1),
@@ -86,9 +87,8 @@ struct AddCellForceToFaces {
   const Vec3* force;
   float dt;
   float* u;
-  DP_HD void operator()(std::size_t f) const {
-    int i, j, k;
-    grid.face_coords(axis, f, i, j, k);
+  DP_HD void operator()(int i, int j, int k) const {
+    const std::size_t f = grid.face(axis, i, j, k);
     const int a = (axis == 0 ? i : (axis == 1 ? j : k));
     const int lo = a > 0 ? a - 1 : 0, hi = a < grid.n(axis) ? a : a - 1;
     const Vec3 fl = force[grid.cell(axis == 0 ? lo : i, axis == 1 ? lo : j, axis == 2 ? lo : k)];
