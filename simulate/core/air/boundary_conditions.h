@@ -27,12 +27,6 @@ DP_HD inline FaceSides face_sides(const MacGrid& g, int axis, int i, int j, int 
   return s;
 }
 
-DP_HD inline FaceSides face_sides(const MacGrid& g, int axis, std::size_t f) {
-  int i, j, k;
-  g.face_coords(axis, f, i, j, k);
-  return face_sides(g, axis, i, j, k);
-}
-
 // True where the flow and the projection decide the face's velocity.
 DP_HD inline bool face_is_free(const CellKinds& cells, int axis, const FaceSides& s) {
   if (s.lo && s.hi) return cells.kind[s.cell_lo] == kAirCell && cells.kind[s.cell_hi] == kAirCell;
@@ -47,7 +41,6 @@ struct EnforceFaceVelocity {
   const AirInflow* inflows;
   float* u;
 
-  DP_HD void operator()(std::size_t f) const { enforce(f, face_sides(cells.grid, axis, f)); }
   DP_HD void operator()(int i, int j, int k) const {
     enforce(cells.grid.face(axis, i, j, k), face_sides(cells.grid, axis, i, j, k));
   }

@@ -38,12 +38,6 @@ struct MacGrid {
   DP_HD std::size_t face(int axis, int i, int j, int k) const {
     return (static_cast<std::size_t>(k) * face_n(axis, 1) + j) * face_n(axis, 0) + i;
   }
-  DP_HD void face_coords(int axis, std::size_t f, int& i, int& j, int& k) const {
-    const int fx = face_n(axis, 0), fy = face_n(axis, 1);
-    i = static_cast<int>(f % fx);
-    j = static_cast<int>((f / fx) % fy);
-    k = static_cast<int>(f / (static_cast<std::size_t>(fx) * fy));
-  }
 
   DP_HD Vec3 cell_center(int i, int j, int k) const {
     return origin + dx * Vec3{i + 0.5f, j + 0.5f, k + 0.5f};

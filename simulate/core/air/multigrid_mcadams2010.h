@@ -132,11 +132,6 @@ struct RestrictResidual {
   PoissonLevel fine, coarse;
   const float* r;
   float* b;
-  DP_HD void operator()(std::size_t c) const {
-    int I, J, K;
-    coarse.coords(c, I, J, K);
-    (*this)(I, J, K);
-  }
   DP_HD void operator()(int I, int J, int K) const {
     const std::size_t c = coarse.index(I, J, K);
     if (!coarse.unknown[c]) {
@@ -189,11 +184,6 @@ struct ProlongAndAdd {
   const float* scale;
   const float* e;
   float* x;
-  DP_HD void operator()(std::size_t f) const {
-    int i, j, k;
-    fine.coords(f, i, j, k);
-    (*this)(i, j, k);
-  }
   DP_HD void operator()(int i, int j, int k) const {
     const std::size_t f = fine.index(i, j, k);
     if (!fine.unknown[f]) return;

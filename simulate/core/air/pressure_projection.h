@@ -45,7 +45,6 @@ struct SubtractPressureGradient {
   int axis;
   const float* phi;
   float* u;
-  DP_HD void operator()(std::size_t f) const { subtract(f, face_sides(cells.grid, axis, f)); }
   DP_HD void operator()(int i, int j, int k) const {
     subtract(cells.grid.face(axis, i, j, k), face_sides(cells.grid, axis, i, j, k));
   }

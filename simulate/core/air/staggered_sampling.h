@@ -76,20 +76,6 @@ struct Lattice {
   }
   // The same from corners already located (FaceVelocity shares them between
   // components): the eight values are reached by offsets from one index.
-  // The same at a point whose lower corner (i, j, k) and weights are known
-  // at compile time, its upper corners inside the lattice: Wx, Wy, Wz are 1
-  // for weight 1/2 and 0 for weight 0, where a lerp would give its first
-  // value (a + 0 (b - a) = a for finite values) and the upper layer is not
-  // read. The terms and their order are those of the general sample.
-  template <int Wx, int Wy, int Wz>
-  DP_HD T sample_fixed(int i, int j, int k) const {
-    const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
-    const std::size_t c = index(i, j, k);
-    const T y0 = along_y<Wx, Wy>(c, row);
-    if constexpr (Wz == 0) return y0;
-    else return lerp(y0, along_y<Wx, Wy>(c + slab, row), 0.5f);
-  }
-
   DP_HD T sample(Corner x, Corner y, Corner z, T* lo = nullptr, T* hi = nullptr) const {
     const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
     const std::size_t c = index(x.i, y.i, z.i);
@@ -102,6 +88,20 @@ struct Lattice {
     }
     const T x00 = lerp(c000, c100, x.t), x10 = lerp(c010, c110, x.t), x01 = lerp(c001, c101, x.t), x11 = lerp(c011, c111, x.t);
     return lerp(lerp(x00, x10, y.t), lerp(x01, x11, y.t), z.t);
+  }
+
+  // The same at a point whose lower corner (i, j, k) and weights are known
+  // at compile time, its upper corners inside the lattice: Wx, Wy, Wz are 1
+  // for weight 1/2 and 0 for weight 0, where a lerp would give its first
+  // value (a + 0 (b - a) = a for finite values) and the upper layer is not
+  // read. The terms and their order are those of the general sample.
+  template <int Wx, int Wy, int Wz>
+  DP_HD T sample_fixed(int i, int j, int k) const {
+    const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
+    const std::size_t c = index(i, j, k);
+    const T y0 = along_y<Wx, Wy>(c, row);
+    if constexpr (Wz == 0) return y0;
+    else return lerp(y0, along_y<Wx, Wy>(c + slab, row), 0.5f);
   }
 
  private:
