@@ -37,6 +37,25 @@ struct Options {
   int checkpoint_every = 10;  // frames; 0: none
 };
 
+// simulation.settle, before frame 0: the frames and the clock start from the
+// settled liquid.
+void settle_liquid(dp::Simulation& simulation, const dp::SettleSettings& settle, dp::io::LogLevel level) {
+  std::int64_t steps = 0;
+  int halvings = 0;
+  dp::StepReport last;
+  simulation.settle([&](const dp::StepReport& report) {
+    ++steps;
+    halvings += report.pressure_halvings;
+    last = report;
+    if (dp::io::logs(level, dp::io::LogLevel::Debug))
+      std::cerr << "dewpoint-simulate: settling step " << steps << ": dt=" << report.dt << " s  PCISPH "
+                << report.pressure_iterations << " it, density error " << 100.0 * report.density_error << " %\n";
+  });
+  if (dp::io::logs(level, dp::io::LogLevel::Info))
+    std::cerr << "dewpoint-simulate: settled the liquid for " << settle.duration << " s in " << steps << " steps (last dt "
+              << last.dt << " s, " << halvings << " halved for PCISPH); velocities set to zero at t = 0\n";
+}
+
 // The newest intact checkpoint of OUT, checked against the scene; none when
 // there is none (the run then starts at frame 0). Damaged ones are skipped
 // with a warning; a checkpoint of another scene is an error.
@@ -192,6 +211,8 @@ int run(const Options& opt) {
       std::cerr << "dewpoint-simulate: step " << simulation->step_count() << ": " << progress_detail() << "\n";
     if (progress.due(frames_done)) progress.update(frames_done, progress_detail());
   };
+
+  if (!resumed && setup.settle.duration > 0) settle_liquid(*simulation, setup.settle, opt.level);
 
   const std::uint64_t scene_hash = dp::io::scene_document_hash(scene.document);
   for (int frame = first_frame; frame <= last_frame; ++frame) {

@@ -44,6 +44,16 @@ struct PressureSolverSettings {
   int max_iterations = 100;
 };
 
+// Settling before the first step (Simulation::settle): the liquid alone,
+// its velocities damped, comes to rest against the rigids. Liquid blocks are
+// lattices that stand off the walls and have no hydrostatic pressure yet; a
+// deep column left to settle by itself pushes liquid into the gaps along
+// the walls and shoots it up the corners at up to Torricelli's sqrt(2 g H).
+struct SettleSettings {
+  float duration = 0.0f;  // s of settling; 0: none
+  float damping = 20.0f;  // 1/s: v -> v / (1 + damping dt) each step
+};
+
 enum class TimeStepMode { Fixed, Cfl };
 
 struct TimeStepSettings {
@@ -61,6 +71,7 @@ struct SimulationSetup {
   float max_speed = 50.0f;         // m/s; faster is an instability
   TimeStepSettings time_step;
   PressureSolverSettings pressure;
+  SettleSettings settle;
   LiquidMaterial liquid;
   RigidMaterial rigid;
   bool heat_conduction = true;
@@ -85,6 +96,7 @@ struct SimulationSetup {
 struct StepReport {
   float dt = 0;                 // s
   int pressure_iterations = 0;
+  int pressure_halvings = 0;    // times PCISPH missed eta at its cap and the step was halved (CFL mode)
   float density_error = 0;      // average (rho* - rho0)/rho0 after the last iteration
   double seconds_neighbours = 0, seconds_pressure = 0, seconds_heat = 0, seconds_other = 0;  // wall clock
   double seconds_grid = 0;      // the air phase (Alg. 1 lines 7-11), wall clock
@@ -123,6 +135,10 @@ class Simulation {
   // than the time-step rule allows (never a sliver at the end); `on_step`,
   // when given, sees each step's report (for the per-step timing table).
   virtual void advance_to(double time, const std::function<void(const StepReport&)>& on_step = {}) = 0;
+  // Settles the liquid as `SimulationSetup::settle` says, before the first
+  // step (nothing otherwise, also after a restore); time() stays 0 and
+  // step_count() 0; `on_step` sees each settling step.
+  virtual void settle(const std::function<void(const StepReport&)>& on_step = {}) = 0;
   virtual ParticleSnapshot particles() const = 0;
   virtual std::vector<Vec3> rigid_particles() const = 0;
   virtual std::vector<float> rigid_volumes() const = 0;

@@ -17,6 +17,7 @@
 #include "sph/heat_cleary_monaghan1999.h"
 #include "sph/particle_grid.h"
 #include "sph/pcisph_solenthaler2009.h"
+#include "sph/settling.h"
 #include "sph/surface_area_orthmann2013.h"
 #include "sph/surface_tension_akinci2013.h"
 #include "sph/time_step.h"
@@ -136,6 +137,20 @@ class SimulationImpl final : public Simulation {
     }
   }
 
+  // Before the first step: the liquid alone, damped, for the scene's
+  // settling time; then at rest, with the clock still at zero.
+  void settle(const std::function<void(const StepReport&)>& on_step) override {
+    const double duration = setup_.settle.duration;
+    if (duration <= 0 || settling_steps_ > 0 || steps_ > 0) return;
+    double settled_time = 0;
+    while (duration - settled_time > 1e-9) {
+      const StepReport& report = step_with(step_towards(duration - settled_time, next_time_step()), Phase::Settling);
+      settled_time += report.dt;
+      if (on_step) on_step(report);
+    }
+    exec_.parallel_for(liquid_.position.size(), DampVelocity{0.0f, Exec::ptr(liquid_.velocity)});
+  }
+
   ParticleSnapshot particles() const override {
     ParticleSnapshot s;
     s.position = Exec::download(liquid_.position);
@@ -165,8 +180,10 @@ class SimulationImpl final : public Simulation {
   SimulationState state() const override {
     SimulationState s;
     s.steps = steps_;
+    s.settling_steps = settling_steps_;
     s.time = time_;
     s.last_max_acceleration = last_max_acceleration_;
+    s.converged_step_limit = converged_limit_.limit;
     s.emitted_particles = emitted_particles_;
     split_units(coupling_.liquid_to_air_units(), s.liquid_to_air_lo, s.liquid_to_air_hi);
     split_units(coupling_.texels_to_air_units(), s.texels_to_air_lo, s.texels_to_air_hi);
@@ -214,8 +231,10 @@ class SimulationImpl final : public Simulation {
     next_id_ = l.next_id;
     Exec::upload(rigid_temperature_, s.rigid_temperature);
     steps_ = s.steps;
+    settling_steps_ = s.settling_steps;
     time_ = s.time;
     last_max_acceleration_ = s.last_max_acceleration;
+    converged_limit_.limit = s.converged_step_limit;
     emitted_particles_ = s.emitted_particles;
     coupling_.restore_units(join_units(s.liquid_to_air_lo, s.liquid_to_air_hi), join_units(s.texels_to_air_lo, s.texels_to_air_hi));
     initial_water_ = s.initial_water;
@@ -340,9 +359,9 @@ class SimulationImpl final : public Simulation {
     // The last step's total acceleration bounds the next one's; gravity
     // alone before the first step.
     float amax = length(setup_.gravity);
-    if (steps_ > 0) amax = std::fmax(amax, last_max_acceleration_);
-    float dt = cfl_time_step(setup_.particle_spacing, vmax, amax, ts.cfl_number, ts.force_number,
-                             std::fmin(ts.max_step, heat_dt_limit_));
+    if (steps_ > 0 || settling_steps_ > 0) amax = std::fmax(amax, last_max_acceleration_);
+    float dt = converged_limit_.bound(cfl_time_step(setup_.particle_spacing, vmax, amax, ts.cfl_number, ts.force_number,
+                                                    std::fmin(ts.max_step, heat_dt_limit_)));
     if (dt < ts.min_step) {
       std::ostringstream s;
       s << "CFL time step " << dt << " s below the minimum " << ts.min_step << " s (max speed " << vmax
@@ -352,13 +371,19 @@ class SimulationImpl final : public Simulation {
     return dt;
   }
 
-  StepReport step_with(float dt) {
+  // A step of the whole simulation, or (Settling) of the liquid alone with
+  // its velocities damped: no heat, textures, air or evaporation, and the
+  // clock stands still (settle).
+  enum class Phase { Running, Settling };
+
+  StepReport step_with(float planned_dt, Phase phase = Phase::Running) {
+    const bool running = phase == Phase::Running;
     StepReport report;
-    report.dt = dt;
+    report.dt = planned_dt;
     // Alg. 1 line 18 of the previous step, run here so that the state a
     // frame sees (positions and the step's densities, pressures, areas) is
     // of one particle set.
-    adapt_masses();
+    if (running) adapt_masses();
     auto t0 = Clock::now();
     sort_liquid();  // Alg. 1 line 3
     // The step's neighbourhoods, found once for all pressure iterations.
@@ -382,12 +407,6 @@ class SimulationImpl final : public Simulation {
     exec_.synchronize();
     double other = seconds_since(t1);
 
-    auto th = Clock::now();
-    if (setup_.heat_conduction) conduct_heat(dt, liquid, rigid);
-    surfaces_.step(exec_, dt, rigid_temperature_, liquid, n);  // Alg. 1 line 14, wetting history
-    exec_.synchronize();
-    report.seconds_heat = seconds_since(th);
-
     t1 = Clock::now();
     // Alg. 1 line 5: external forces; surface tension and adhesion after
     // Akinci et al. 2013.
@@ -397,7 +416,9 @@ class SimulationImpl final : public Simulation {
       exec_.parallel_for(n, ComputeSurfaceTensionAcceleration{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(density_),
                                                               Exec::ptr(normal_), Exec::ptr(rigid_volume_),
                                                               Exec::ptr(rigid_adhesion_), st, Exec::ptr(tension_acc_)});
-      // Alg. 1 line 19 (coupling/path_force.h), from this step's wetting history.
+      // Alg. 1 line 19 (coupling/path_force.h), from the wetting history as
+      // the previous step left it: this step's length is known only after
+      // the pressure solve.
       path_force_.apply(exec_, surfaces_, rigid, rigid_volume_, Exec::ptr(liquid_.position), n, kernel_.h,
                         setup_.liquid.rest_density, Exec::ptr(tension_acc_));
     }
@@ -407,9 +428,20 @@ class SimulationImpl final : public Simulation {
     other += seconds_since(t1);
 
     auto t2 = Clock::now();
-    solve_pressure(dt, report);  // Alg. 1 line 6
+    const float dt = solve_pressure_converging(planned_dt, report);  // Alg. 1 line 6
+    report.dt = dt;
     exec_.synchronize();
     report.seconds_pressure = seconds_since(t2);
+
+    // Heat and the texels' state from the positions at the start of the
+    // step, which the pressure solve has not moved.
+    auto th = Clock::now();
+    if (running) {
+      if (setup_.heat_conduction) conduct_heat(dt, liquid, rigid);
+      surfaces_.step(exec_, dt, rigid_temperature_, liquid, n);  // Alg. 1 line 14, wetting history
+    }
+    exec_.synchronize();
+    report.seconds_heat = seconds_since(th);
 
     auto t3 = Clock::now();
     exec_.parallel_for(n, IntegrateMotion{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_), dt, Exec::ptr(liquid_.velocity),
@@ -419,12 +451,18 @@ class SimulationImpl final : public Simulation {
                                     Exec::ptr(liquid_.velocity), kernel_, particle_mass_, setup_.liquid.xsph_epsilon,
                                     setup_.liquid.boundary_friction, Exec::ptr(velocity_tmp_)});
     liquid_.velocity.swap(velocity_tmp_);
+    if (!running) exec_.parallel_for(n, DampVelocity{settling_damping_factor(setup_.settle, dt), Exec::ptr(liquid_.velocity)});
     last_max_acceleration_ = exec_.max(n, TotalAcceleration{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_)}, 0.0f);
-    ++steps_;
-    time_ += dt;
-    check_stability();
+    if (running) {
+      ++steps_;
+      time_ += dt;
+    } else {
+      ++settling_steps_;
+    }
+    check_stability(phase);
     exec_.synchronize();
     report.seconds_other = other + seconds_since(t3);
+    if (!running) return report;
     step_air(dt, report);  // Alg. 1 Phase 2
     couple(dt, report);    // Alg. 1 Phase 3, lines 12-16
     emit_particles();      // line 17
@@ -524,7 +562,29 @@ class SimulationImpl final : public Simulation {
                          Exec::ptr(rigid_volume_), kernel_, particle_mass_, setup_.liquid.rest_density};
   }
 
-  void solve_pressure(float dt, StepReport& report) {
+  // Alg. 1 line 6 at the planned step or, where PCISPH does not converge
+  // within its cap, at the first halving of it that does (in CFL mode; a
+  // fixed step is the user's).
+  float solve_pressure_converging(float dt, StepReport& report) {
+    constexpr int kMaxHalvings = 4;
+    bool converged = solve_pressure(dt, report);
+    int halvings = 0;
+    while (!converged && setup_.time_step.mode == TimeStepMode::Cfl && halvings < kMaxHalvings &&
+           0.5f * dt >= setup_.time_step.min_step) {
+      dt *= 0.5f;
+      ++halvings;
+      converged = solve_pressure(dt, report);
+    }
+    report.pressure_halvings = halvings;
+    if (halvings > 0)
+      converged_limit_.halved_to(dt);
+    else if (converged)
+      converged_limit_.converged();
+    return dt;
+  }
+
+  // Returns whether the average density error came below eta.
+  bool solve_pressure(float dt, StepReport& report) {
     const std::size_t n = liquid_.position.size();
     const PressureSolverSettings& ps = setup_.pressure;
     const float delta = pcisph_delta(pcisph_sum_, dt, particle_mass_, setup_.liquid.rest_density);
@@ -551,6 +611,7 @@ class SimulationImpl final : public Simulation {
     }
     report.pressure_iterations = iteration;
     report.density_error = error;
+    return error <= ps.max_density_error;
   }
 
   // Sorting the particles themselves (not just an index) keeps neighbours
@@ -582,7 +643,7 @@ class SimulationImpl final : public Simulation {
     if (liquid_.size() != n) resize_scratch(liquid_.size());
   }
 
-  void check_stability() {
+  void check_stability(Phase phase) {
     const std::size_t n = liquid_.position.size();
     float vmax = setup_.max_speed;
     std::size_t bad = exec_.find_first(n, IsUnstable{Exec::ptr(liquid_.position), Exec::ptr(liquid_.velocity), setup_.domain_min,
@@ -591,6 +652,7 @@ class SimulationImpl final : public Simulation {
     Vec3 x = Exec::download(liquid_.position)[bad], v = Exec::download(liquid_.velocity)[bad];
     std::uint32_t id = Exec::download(liquid_.id)[bad];
     std::ostringstream detail;
+    if (phase == Phase::Settling) detail << "while settling (settling step " << settling_steps_ << "): ";
     std::string quantity;
     bool finite = std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) && std::isfinite(v.x) &&
                   std::isfinite(v.y) && std::isfinite(v.z);
@@ -648,6 +710,8 @@ class SimulationImpl final : public Simulation {
   std::int64_t steps_ = 0;
   double time_ = 0;
   float last_max_acceleration_ = 0;
+  ConvergedStepLimit converged_limit_;
+  std::int64_t settling_steps_ = 0;  // taken by settle; its last acceleration bounds the first step
   StepReport report_;
   SurfaceTextures<Exec> surfaces_;
   std::optional<AirGrid<Exec>> air_;

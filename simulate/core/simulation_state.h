@@ -45,8 +45,10 @@ struct AirGridState {
 
 struct SimulationState {
   std::int64_t steps = 0;
+  std::int64_t settling_steps = 0;    // taken by Simulation::settle before step 1
   double time = 0;                    // s
   float last_max_acceleration = 0;    // m/s^2, bounds the next CFL step
+  float converged_step_limit = 1e30f; // s, sph/time_step.h: ConvergedStepLimit
   std::uint64_t emitted_particles = 0;
   // Exact unit totals of the coupling (128-bit, as two halves).
   std::uint64_t liquid_to_air_lo = 0, texels_to_air_lo = 0;

@@ -120,8 +120,10 @@ WaterLedger get_ledger(ByteReader& r) {
 
 void put_state(ByteWriter& w, const SimulationState& s) {
   w.put(s.steps);
+  w.put(s.settling_steps);
   w.put(s.time);
   w.put(s.last_max_acceleration);
+  w.put(s.converged_step_limit);
   w.put(s.emitted_particles);
   w.put(s.liquid_to_air_lo);
   w.put(s.liquid_to_air_hi);
@@ -161,8 +163,10 @@ void put_state(ByteWriter& w, const SimulationState& s) {
 SimulationState get_state(ByteReader& r) {
   SimulationState s;
   s.steps = r.get<std::int64_t>();
+  s.settling_steps = r.get<std::int64_t>();
   s.time = r.get<double>();
   s.last_max_acceleration = r.get<float>();
+  s.converged_step_limit = r.get<float>();
   s.emitted_particles = r.get<std::uint64_t>();
   s.liquid_to_air_lo = r.get<std::uint64_t>();
   s.liquid_to_air_hi = r.get<std::int64_t>();

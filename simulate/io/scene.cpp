@@ -278,6 +278,11 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
       throw p->error("max_iterations", "expected at least min_iterations");
     p->finish();
   }
+  if (auto p = o.optional_object("settle")) {
+    s.settle.duration_s = non_negative(*p, "duration_s", p->number("duration_s", s.settle.duration_s));
+    s.settle.damping_per_s = positive(*p, "damping_per_s", p->number("damping_per_s", s.settle.damping_per_s));
+    p->finish();
+  }
 
   for (JsonObject b : o.objects("liquid_blocks")) {
     LiquidBlock block = read_liquid_region(b);

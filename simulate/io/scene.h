@@ -77,6 +77,12 @@ struct PressureSolverSettings {
   int max_iterations = 100;
 };
 
+// simulation.settle: the liquid comes to rest before t = 0.
+struct SettleSectionSettings {
+  double duration_s = 0;
+  double damping_per_s = 20;
+};
+
 // simulation.air (paper Sec. 4.2); see docs/scene-format.md.
 struct AirInflowSettings {
   bool disc = false;
@@ -130,6 +136,7 @@ struct SimulationSettings {
   double max_speed_m_s = 50;
   LiquidSettings liquid;
   PressureSolverSettings pressure_solver;
+  SettleSectionSettings settle;
   std::vector<LiquidBlock> liquid_blocks;
   std::vector<RigidObject> rigids;
   RigidMaterialSettings rigid_material;

@@ -150,6 +150,8 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   setup.pressure.max_density_error = static_cast<float>(s.pressure_solver.max_density_error);
   setup.pressure.min_iterations = s.pressure_solver.min_iterations;
   setup.pressure.max_iterations = s.pressure_solver.max_iterations;
+  setup.settle.duration = static_cast<float>(s.settle.duration_s);
+  setup.settle.damping = static_cast<float>(s.settle.damping_per_s);
   setup.max_speed = static_cast<float>(s.max_speed_m_s);
   setup.liquid.rest_density = static_cast<float>(s.liquid.rest_density_kg_m3);
   setup.liquid.xsph_epsilon = static_cast<float>(s.liquid.xsph_epsilon);

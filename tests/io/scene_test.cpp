@@ -88,6 +88,19 @@ TEST(Scene, UnknownTimeStepModeIsRejected) {
   EXPECT_NE(e.find("simulation.time_step_mode: expected \"cfl\" or \"fixed\", found \"adaptive\""), std::string::npos) << e;
 }
 
+TEST(Scene, SettleReadsItsKeysAndRefusesANegativeDuration) {
+  auto doc = demo_document();
+  doc["simulation"]["settle"] = {{"duration_s", 0.25}, {"damping_per_s", 40}};
+  Scene s = load_scene(write_scene(doc, "settle.json"));
+  EXPECT_DOUBLE_EQ(s.simulation.settle.duration_s, 0.25);
+  EXPECT_DOUBLE_EQ(s.simulation.settle.damping_per_s, 40);
+  EXPECT_DOUBLE_EQ(load_scene(kDemo).simulation.settle.duration_s, 0.0) << "no settling unless asked";
+  doc["simulation"]["settle"]["duration_s"] = -1;
+  std::string e = error_of(doc, "settle_negative.json");
+  EXPECT_NE(e.find("settle_negative.json"), std::string::npos) << e;
+  EXPECT_NE(e.find("simulation.settle.duration_s"), std::string::npos) << e;
+}
+
 TEST(Scene, TemperatureBelowAbsoluteZeroIsRejected) {
   auto doc = demo_document();
   doc["simulation"]["liquid"]["temperature_c"] = -300;
