@@ -145,6 +145,9 @@ int run(const Options& opt) {
   fs::create_directories(stats_dir);
   dp::io::StepTimingsCsv timings = resumed ? dp::io::StepTimingsCsv(stats_dir / "timings.csv", resumed->state.steps)
                                            : dp::io::StepTimingsCsv(stats_dir / "timings.csv");
+  // Before the progress clock starts: its steps per second are the run's.
+  if (!resumed && setup.settle.duration > 0) settle_liquid(*simulation, setup.settle, opt.level);
+
   const double frame_interval = 1.0 / sim.frame_rate_hz;
   dp::io::Progress progress("simulate " + scene.name, last_frame + 1, !dp::io::logs(opt.level, dp::io::LogLevel::Info));
   const auto run_start = std::chrono::steady_clock::now();
@@ -211,8 +214,6 @@ int run(const Options& opt) {
       std::cerr << "dewpoint-simulate: step " << simulation->step_count() << ": " << progress_detail() << "\n";
     if (progress.due(frames_done)) progress.update(frames_done, progress_detail());
   };
-
-  if (!resumed && setup.settle.duration > 0) settle_liquid(*simulation, setup.settle, opt.level);
 
   const std::uint64_t scene_hash = dp::io::scene_document_hash(scene.document);
   for (int frame = first_frame; frame <= last_frame; ++frame) {
