@@ -451,7 +451,7 @@ class SimulationImpl final : public Simulation {
                                     Exec::ptr(liquid_.velocity), kernel_, particle_mass_, setup_.liquid.xsph_epsilon,
                                     setup_.liquid.boundary_friction, Exec::ptr(velocity_tmp_)});
     liquid_.velocity.swap(velocity_tmp_);
-    if (!running) exec_.parallel_for(n, DampVelocity{settling_damping_factor(setup_.settle, dt), Exec::ptr(liquid_.velocity)});
+    if (!running) exec_.parallel_for(n, DampVelocity{settling_damping_factor(setup_.settle.damping, dt), Exec::ptr(liquid_.velocity)});
     last_max_acceleration_ = exec_.max(n, TotalAcceleration{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_)}, 0.0f);
     if (running) {
       ++steps_;
@@ -563,8 +563,8 @@ class SimulationImpl final : public Simulation {
   }
 
   // Alg. 1 line 6 at the planned step or, where PCISPH does not converge
-  // within its cap, at the first halving of it that does (in CFL mode; a
-  // fixed step is the user's).
+  // within its cap, at the first halving of it that does; after 4 halvings
+  // the last solve stands. CFL mode only: a fixed step is the user's.
   float solve_pressure_converging(float dt, StepReport& report) {
     constexpr int kMaxHalvings = 4;
     bool converged = solve_pressure(dt, report);

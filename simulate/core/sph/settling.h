@@ -3,11 +3,10 @@
 // decay as dv/dt = -damping v, taken implicitly so that any step is stable.
 #include "backend/host_device.h"
 #include "math/vec3.h"
-#include "simulation.h"
 
 namespace dp {
 
-inline float settling_damping_factor(const SettleSettings& settle, float dt) { return 1.0f / (1.0f + settle.damping * dt); }
+inline float settling_damping_factor(float damping, float dt) { return 1.0f / (1.0f + damping * dt); }
 
 struct DampVelocity {
   float factor;
