@@ -42,9 +42,20 @@ class CpuExec {
   template <class T>
   static std::vector<T> download(const Buffer<T>& src) { return src; }
 
+  // Loops over fewer elements than this run on the calling thread: waking
+  // the other threads for one pass costs tens of microseconds (a futex
+  // round trip, more under a hypervisor), more than a pass over a coarse
+  // multigrid level or a short list takes. Each element is computed alone
+  // either way, so results do not change.
+  static constexpr std::size_t kSerialBelow = std::size_t{1} << 15;
+
   // Calls f(i) for every i in [0, n).
   template <class F>
   void parallel_for(std::size_t n, const F& f) const {
+    if (!uses_threads(n)) {
+      for (std::size_t i = 0; i < n; ++i) f(i);
+      return;
+    }
     const std::int64_t count = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static) num_threads(threads_)
     for (std::int64_t i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
@@ -56,7 +67,7 @@ class CpuExec {
   template <class F>
   void parallel_for_3d(int nx, int ny, int nz, const F& f) const {
     const std::int64_t rows = static_cast<std::int64_t>(ny) * nz;
-#pragma omp parallel for schedule(static) num_threads(threads_)
+#pragma omp parallel for schedule(static) num_threads(threads_) if (uses_threads(static_cast<std::size_t>(rows) * nx))
     for (std::int64_t r = 0; r < rows; ++r) {
       const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
       for (int i = 0; i < nx; ++i) f(i, j, k);
@@ -87,7 +98,9 @@ class CpuExec {
   double sum(std::size_t n, const ValueAt& f) const {
     if (n == 0) return 0.0;
     std::vector<double> level(sum_block_count(n));
-    parallel_for(level.size(), [&](std::size_t b) { level[b] = sum_block(b, n, f); });
+    const std::int64_t blocks = static_cast<std::int64_t>(level.size());
+#pragma omp parallel for schedule(static) num_threads(threads_) if (uses_threads(n))
+    for (std::int64_t b = 0; b < blocks; ++b) level[b] = sum_block(static_cast<std::size_t>(b), n, f);
     while (level.size() > 1) {
       std::vector<double> next(sum_block_count(level.size()));
       for (std::size_t b = 0; b < next.size(); ++b) next[b] = sum_block(b, level.size(), BlockSums{level.data()});
@@ -117,7 +130,7 @@ class CpuExec {
   std::size_t find_first(std::size_t n, const Pred& pred) const {
     std::size_t first = n;
     const std::int64_t count = static_cast<std::int64_t>(n);
-#pragma omp parallel for schedule(static) num_threads(threads_) reduction(min : first)
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(min : first) if (uses_threads(n))
     for (std::int64_t i = 0; i < count; ++i)
       if (pred(static_cast<std::size_t>(i))) first = std::min(first, static_cast<std::size_t>(i));
     return first;
@@ -136,6 +149,8 @@ class CpuExec {
   void synchronize() const {}
 
  private:
+  bool uses_threads(std::size_t elements) const { return threads_ > 1 && elements >= kSerialBelow; }
+
   int threads_;
 };
 
