@@ -98,6 +98,7 @@ class CpuExec {
   double sum(std::size_t n, const ValueAt& f) const {
     if (n == 0) return 0.0;
     std::vector<double> level(sum_block_count(n));
+    // Threads by the n elements summed, not by the few blocks they fill.
     const std::int64_t blocks = static_cast<std::int64_t>(level.size());
 #pragma omp parallel for schedule(static) num_threads(threads_) if (uses_threads(n))
     for (std::int64_t b = 0; b < blocks; ++b) level[b] = sum_block(static_cast<std::size_t>(b), n, f);
