@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench_arguments.h"
@@ -23,6 +24,7 @@ struct Options {
   std::string device = "cpu";
   int threads = 0;
   int fingerprint = 0;  // 1: print a hash of the air's fields after the run
+  int parts = 0;        // 1: also the median time of each part of the step
 };
 
 Options parse(int argc, char** argv) {
@@ -34,13 +36,14 @@ Options parse(int argc, char** argv) {
       .add("--device", "cpu|cuda", &o.device)
       .add("--threads", "N", &o.threads)
       .add("--fingerprint", "0|1", &o.fingerprint)
+      .add("--parts", "0|1", &o.parts)
       .parse(argc, argv);
   return o;
 }
 
 // A 1 m box of n^3 air cells; particles small enough that the cells exceed
 // two support radii (cell = 5 spacings); a jet in from x = 0.
-dp::SimulationSetup jet_box(int n) {
+dp::SimulationSetup jet_box(int n, bool time_parts) {
   dp::SimulationSetup s;
   const float dx = 1.0f / n;
   s.particle_spacing = dx / 5;
@@ -64,6 +67,7 @@ dp::SimulationSetup jet_box(int n) {
   a.resolution = n;
   a.ambient_vapor = 0.0086;  // 50 % relative humidity at 20 C
   a.vorticity_epsilon = 1.0f;
+  a.time_parts = time_parts;
   a.open_face[static_cast<int>(dp::AirFace::XMax)] = true;
   a.open_face[static_cast<int>(dp::AirFace::YMax)] = true;
   dp::AirInflow jet;
@@ -102,27 +106,46 @@ double median(std::vector<double> v) {
   return v.empty() ? 0 : v[v.size() / 2];
 }
 
+// The median of each part, in the step's order.
+void print_parts(const std::vector<dp::AirStepSeconds>& steps) {
+  const std::pair<const char*, double dp::AirStepSeconds::*> parts[] = {
+      {"inflows", &dp::AirStepSeconds::inflows},     {"vapor", &dp::AirStepSeconds::vapor},
+      {"temperature", &dp::AirStepSeconds::temperature}, {"forces", &dp::AirStepSeconds::forces},
+      {"velocity", &dp::AirStepSeconds::velocity},   {"diffusion", &dp::AirStepSeconds::diffusion},
+      {"projection", &dp::AirStepSeconds::projection}};
+  std::printf("parts (ms, median):");
+  for (const auto& [name, member] : parts) {
+    std::vector<double> ms;
+    for (const dp::AirStepSeconds& s : steps) ms.push_back(1e3 * (s.*member));
+    std::printf(" %s %.2f", name, median(ms));
+  }
+  std::printf("\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   try {
     const dp::ExecutionConfig exec{dp::parse_device(o.device), dp::resolve_thread_count(o.threads)};
-    auto sim = dp::make_simulation(exec, jet_box(o.resolution));
+    auto sim = dp::make_simulation(exec, jet_box(o.resolution, o.parts != 0));
     for (int i = 0; i < o.warmup; ++i) sim->step();
     std::vector<double> grid, iterations, residual;
+    std::vector<dp::AirStepSeconds> parts;
     int substeps = 0;
     for (int i = 0; i < o.steps; ++i) {
       const dp::StepReport r = sim->step();
       grid.push_back(1e3 * r.seconds_grid);
       iterations.push_back(r.air.projection_iterations);
       residual.push_back(r.air.projection_residual);
+      parts.push_back(r.air.seconds);
       substeps = std::max(substeps, r.air.advection_substeps);
     }
     std::printf("air %d^3 on %s (%d threads): %.2f ms/step (median of %d after %d warm-up), CG %.0f iterations "
                 "(median; max %.0f), residual %.1e, vapor sub-steps %d\n",
                 o.resolution, sim->backend_name().c_str(), exec.threads, median(grid), o.steps, o.warmup, median(iterations),
                 *std::max_element(iterations.begin(), iterations.end()), median(residual), substeps);
+    if (o.parts) print_parts(parts);
     if (o.fingerprint) std::printf("air fields fingerprint %016llx\n", static_cast<unsigned long long>(fingerprint_of(*sim->air())));
     return 0;
   } catch (const std::exception& e) {

@@ -44,6 +44,10 @@ void save_checkpoint(const std::filesystem::path& dir, const Checkpoint& checkpo
   }
 }
 
+void remove_checkpoints(const std::filesystem::path& dir) {
+  for (const auto& [frame, file] : listed_checkpoints(dir)) std::filesystem::remove(file);
+}
+
 NewestCheckpoint find_newest_checkpoint(const std::filesystem::path& dir) {
   NewestCheckpoint result;
   for (const auto& [frame, file] : listed_checkpoints(dir)) {

@@ -17,6 +17,9 @@ std::filesystem::path checkpoint_file(const std::filesystem::path& dir, int fram
 // Writes the checkpoint, then removes all but the newest kCheckpointsKept.
 void save_checkpoint(const std::filesystem::path& dir, const Checkpoint& checkpoint);
 
+// Removes every checkpoint in `dir` (other files stay).
+void remove_checkpoints(const std::filesystem::path& dir);
+
 struct NewestCheckpoint {
   std::optional<Checkpoint> checkpoint;  // none: no intact checkpoint
   std::filesystem::path file;

@@ -168,6 +168,24 @@ TEST_F(ResumeCli, ResumeWithoutCheckpointStartsFromTheBeginning) {
   EXPECT_EQ(io::read_manifest(work_ / "out/frames").frames.size(), 3u);
 }
 
+// A second run into the same folder without --resume, shorter than the
+// first: its own checkpoint must be the one a later --resume finds, not the
+// first run's later ones.
+TEST_F(ResumeCli, RunStartedOverReplacesTheEarlierRunsCheckpoints) {
+  const fs::path out = work_ / "out";
+  const test::CommandResult first = run(out);
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  ASSERT_GT(io::find_newest_checkpoint(out / "checkpoints").checkpoint->frame, 1);
+  const test::CommandResult again = run(out, {"--frames", "0-2"});
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(out / "checkpoints")) left.push_back(entry.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{io::checkpoint_file(out / "checkpoints", 1).filename().string()});
+  const test::CommandResult resumed = run(out, {"--resume", "--frames", "0-2"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("resuming after frame 1 "), std::string::npos) << resumed.output;
+}
+
 TEST_F(ResumeCli, ChangedSceneIsRefused) {
   const fs::path out = work_ / "out";
   ASSERT_TRUE(run_and_kill_after_first_checkpoint(out));

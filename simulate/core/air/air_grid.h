@@ -17,6 +17,7 @@
 // buoyancy (Eq. 5) reads and which float then holds to 1e-7 of the excess
 // rather than to 1e-7 of 293 K (3e-5 K, enough to break a symmetric flow's
 // symmetry within a few dozen steps).
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -99,6 +100,26 @@ struct AirCellsView {
   }
 };
 
+// Seconds between laps, each lap waiting for the backend first; nothing
+// when off.
+template <class Exec>
+class PartTimer {
+ public:
+  PartTimer(const Exec& exec, bool on) : exec_(exec), on_(on), last_(std::chrono::steady_clock::now()) {}
+  void lap(double& seconds) {
+    if (!on_) return;
+    exec_.synchronize();
+    const auto now = std::chrono::steady_clock::now();
+    seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+
+ private:
+  const Exec& exec_;
+  bool on_;
+  std::chrono::steady_clock::time_point last_;
+};
+
 template <class Exec>
 class AirGrid {
   template <class T>
@@ -161,16 +182,24 @@ class AirGrid {
   // Alg. 1 lines 8-11.
   AirStepReport step(const Exec& exec, float dt) {
     AirStepReport report;
+    PartTimer timer{exec, settings_.time_parts};
     apply_inflows(exec);
     enforce_boundaries(exec);
+    timer.lap(report.seconds.inflows);
     // Scalars move with the last projected, divergence-free velocity, which
     // neither piles vapor up nor thins it out.
     report.advection_substeps = transport_vapor(exec, dt);
+    timer.lap(report.seconds.vapor);
     advect_temperature(exec, dt);
+    timer.lap(report.seconds.temperature);
     add_forces(exec, dt);
+    timer.lap(report.seconds.forces);
     advect_velocity(exec, dt);
+    timer.lap(report.seconds.velocity);
     report.diffusion_substeps = diffuse(exec, dt);
+    timer.lap(report.seconds.diffusion);
     const PcgResult p = project(exec);
+    timer.lap(report.seconds.projection);
     report.projection_iterations = p.iterations;
     report.projection_residual = p.relative_residual;
     return report;

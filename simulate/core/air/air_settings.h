@@ -42,6 +42,9 @@ struct AirSettings {
   std::array<bool, 6> open_face{};  // per AirFace; false: closed wall
   float projection_tolerance = 1e-5f;  // |r|_2 / |b|_2 of the pressure solve
   int projection_max_iterations = 200;
+  // Times each part of the step (AirStepReport::seconds); on the GPU this
+  // waits for the device after every part, so it is for benchmarks.
+  bool time_parts = false;
 };
 
 }  // namespace dp

@@ -21,11 +21,24 @@ struct AirLedger {
   double expected_mass() const { return initial + inflow_gain + open_in - open_out + exchanged; }
 };
 
+// Wall clock of each part of one air step (s), in the step's order; zero
+// unless AirSettings::time_parts is set.
+struct AirStepSeconds {
+  double inflows = 0;      // inflow cells and face velocities at walls
+  double vapor = 0;        // conservative transport
+  double temperature = 0;  // advection
+  double forces = 0;       // buoyancy and vorticity confinement
+  double velocity = 0;     // advection
+  double diffusion = 0;    // heat and vapor
+  double projection = 0;   // unknowns, right-hand side, PCG, gradient
+};
+
 struct AirStepReport {
   int projection_iterations = 0;
   float projection_residual = 0;  // |r|_2 / |b|_2
   int advection_substeps = 0;     // of the conservative vapor transport
   int diffusion_substeps = 0;
+  AirStepSeconds seconds;
 };
 
 // The grid's state on the host. Vapor is kept in double (see AirGrid).

@@ -85,6 +85,28 @@ struct StepIterateAndResidual {
   }
 };
 
+// q = A d, returning d.q for a sum: the operator and the dot product in one
+// pass (the launchers' sums call f once per element, so it may write it).
+struct ApplyPoissonAndDot {
+  PoissonLevel level;
+  const float* d;
+  float* q;
+  DP_HD double operator()(std::size_t i) const {
+    const float qi = level.apply(d, i);
+    q[i] = qi;
+    return static_cast<double>(d[i]) * qi;
+  }
+};
+
+// StepIterateAndResidual, returning r.r of the stepped residual for a sum.
+struct StepAndResidualNorm {
+  StepIterateAndResidual step;
+  DP_HD double operator()(std::size_t i) const {
+    step(i);
+    return static_cast<double>(step.r[i]) * step.r[i];
+  }
+};
+
 // After the step: counts it, and stops on d.q <= 0, on |r| <= tol |b|, or at
 // the iteration cap (one thread).
 struct CountIterationAndTest {
@@ -201,10 +223,10 @@ class PoissonPcg {
     const std::size_t n = r_.size();
     const PcgScalars p = scalars();
     double* partial = Exec::ptr(partial_);
-    exec.parallel_for(n, ApplyPoisson{multigrid_.view(0), Exec::ptr(d_), Exec::ptr(q_)});
-    exec.sum_into(n, ProductOf{Exec::ptr(d_), Exec::ptr(q_)}, partial, p.s + PcgScalars::kDq);
-    exec.parallel_for(n, StepIterateAndResidual{p, Exec::ptr(d_), Exec::ptr(q_), x, Exec::ptr(r_)});
-    exec.sum_into(n, ProductOf{Exec::ptr(r_), Exec::ptr(r_)}, partial, p.s + PcgScalars::kRr);
+    exec.sum_into(n, ApplyPoissonAndDot{multigrid_.view(0), Exec::ptr(d_), Exec::ptr(q_)}, partial,
+                  p.s + PcgScalars::kDq);
+    const StepIterateAndResidual step{p, Exec::ptr(d_), Exec::ptr(q_), x, Exec::ptr(r_)};
+    exec.sum_into(n, StepAndResidualNorm{step}, partial, p.s + PcgScalars::kRr);
     exec.parallel_for(1, CountIterationAndTest{p});
     precondition(exec);
     exec.sum_into(n, ProductOf{Exec::ptr(r_), Exec::ptr(z_)}, partial, p.s + PcgScalars::kRhoNext);

@@ -58,7 +58,7 @@ struct PoissonLevel {
   // (A x)_c; zero outside the unknowns. A cell with no face to anything
   // (diagonal 0) has phi = 0: it is given the row of the identity. Reads the
   // stencil, so each neighbour costs a bit test instead of bounds checks.
-  DP_HD float apply(const float* x, std::size_t c, float* diagonal_out = nullptr) const {
+  DP_HD_INLINE float apply(const float* x, std::size_t c, float* diagonal_out = nullptr) const {
     const std::uint8_t s = stencil[c];
     if (!(s & kStencilUnknown)) {
       if (diagonal_out) *diagonal_out = 1.0f;
@@ -100,13 +100,6 @@ struct BuildPoissonStencil {
     stencil[c] = bits;
     diagonal[c] = static_cast<std::uint8_t>(d);
   }
-};
-
-struct ApplyPoisson {
-  PoissonLevel level;
-  const float* x;
-  float* out;
-  DP_HD void operator()(std::size_t c) const { out[c] = level.apply(x, c); }
 };
 
 struct PoissonResidual {

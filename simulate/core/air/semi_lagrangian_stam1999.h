@@ -13,7 +13,7 @@ namespace dp {
 // p is point (i, j, k) of lattice `Points` (mac_shift), where the first
 // velocity sample needs no corner search (LatticePointVelocity).
 template <int Points>
-DP_HD GridPoint trace_back(const FaceVelocity& velocity, int i, int j, int k, float cells_per_speed) {
+DP_HD_INLINE GridPoint trace_back(const FaceVelocity& velocity, int i, int j, int k, float cells_per_speed) {
   GridPoint p{i, j, k, mac_shift<Points>()};
   GridPoint mid = p;
   mid.offset -= (0.5f * cells_per_speed) * LatticePointVelocity<Points>::at(velocity, i, j, k);

@@ -36,7 +36,7 @@ struct Corner {
   int i;
   float t;
   int step;
-  DP_HD static Corner locate(int base, float offset, int n) {
+  static DP_HD_INLINE Corner locate(int base, float offset, int n) {
     const float whole = floorf(offset);
     Corner c{base + static_cast<int>(whole), offset - whole, 1};
     if (c.i < 0) {
@@ -71,12 +71,12 @@ struct Lattice {
 
   // The value at p, and the smallest and largest of the eight values it
   // was interpolated from (MacCormack's clamp, Selle et al. 2008).
-  DP_HD T sample(const GridPoint& p, T* lo = nullptr, T* hi = nullptr) const {
+  DP_HD_INLINE T sample(const GridPoint& p, T* lo = nullptr, T* hi = nullptr) const {
     return sample(corner(0, p), corner(1, p), corner(2, p), lo, hi);
   }
   // The same from corners already located (FaceVelocity shares them between
   // components): the eight values are reached by offsets from one index.
-  DP_HD T sample(Corner x, Corner y, Corner z, T* lo = nullptr, T* hi = nullptr) const {
+  DP_HD_INLINE T sample(Corner x, Corner y, Corner z, T* lo = nullptr, T* hi = nullptr) const {
     const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
     const std::size_t c = index(x.i, y.i, z.i);
     const std::size_t di = x.step, dj = y.step * row, dk = z.step * slab;
@@ -151,7 +151,7 @@ struct FaceVelocity {
   // corners serve the three components instead of nine. The shifts are the
   // MAC grid's constants (face_lattice), not read from u, v, w, so that
   // they fold where p's offset is a constant too.
-  DP_HD Vec3 at(const GridPoint& p) const {
+  DP_HD_INLINE Vec3 at(const GridPoint& p) const {
     const Corner x0 = Corner::locate(p.i, p.offset.x - 0.0f, u.nx), x5 = Corner::locate(p.i, p.offset.x - 0.5f, v.nx);
     const Corner y0 = Corner::locate(p.j, p.offset.y - 0.0f, v.ny), y5 = Corner::locate(p.j, p.offset.y - 0.5f, u.ny);
     const Corner z0 = Corner::locate(p.k, p.offset.z - 0.0f, w.nz), z5 = Corner::locate(p.k, p.offset.z - 0.5f, u.nz);
@@ -186,7 +186,7 @@ struct LatticePointVelocity {
                                                                                     k + lower<C, 2>());
   }
 
-  DP_HD static Vec3 at(const FaceVelocity& velocity, int i, int j, int k) {
+  static DP_HD_INLINE Vec3 at(const FaceVelocity& velocity, int i, int j, int k) {
     if (inside<0>(velocity.u, i, j, k) && inside<1>(velocity.v, i, j, k) && inside<2>(velocity.w, i, j, k))
       return Vec3{component<0>(velocity.u, i, j, k), component<1>(velocity.v, i, j, k), component<2>(velocity.w, i, j, k)};
     return velocity.at(GridPoint{i, j, k, mac_shift<Points>()});

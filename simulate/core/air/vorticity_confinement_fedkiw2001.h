@@ -30,7 +30,7 @@ struct CellCentredVelocity {
 
 // d field / d x_axis at an air cell, from its air neighbours.
 template <class T>
-DP_HD T air_derivative(const CellKinds& cells, const T* field, int i, int j, int k, int axis) {
+DP_HD_INLINE T air_derivative(const CellKinds& cells, const T* field, int i, int j, int k, int axis) {
   int pi, pj, pk, mi, mj, mk;
   const bool plus = cells.neighbour(i, j, k, axis, 1, pi, pj, pk) && cells.at(pi, pj, pk) == kAirCell;
   const bool minus = cells.neighbour(i, j, k, axis, 0, mi, mj, mk) && cells.at(mi, mj, mk) == kAirCell;

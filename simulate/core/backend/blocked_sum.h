@@ -30,11 +30,19 @@ DP_HD double sum_lane(std::size_t block, unsigned lane, std::size_t n, const Val
   return s;
 }
 
-// The sum of one block: its lanes folded as the warp folds them.
+// The sum of one block: its lanes folded as the warp folds them. The CPU's
+// form: the block is walked once in index order, element i adding to lane
+// i mod kSumLanes, which gives every lane sum_lane's terms in sum_lane's
+// order while f reads memory contiguously (and can be vectorised).
 template <class ValueAt>
 DP_HD double sum_block(std::size_t block, std::size_t n, const ValueAt& f) {
-  double lane[kSumLanes];
-  for (unsigned l = 0; l < kSumLanes; ++l) lane[l] = sum_lane(block, l, n, f);
+  double lane[kSumLanes] = {};
+  const std::size_t begin = block * kSumBlock;
+  const std::size_t end = begin + kSumBlock < n ? begin + kSumBlock : n;
+  std::size_t i = begin;
+  for (; i + kSumLanes <= end; i += kSumLanes)
+    for (unsigned l = 0; l < kSumLanes; ++l) lane[l] += static_cast<double>(f(i + l));
+  for (unsigned l = 0; i < end; ++i, ++l) lane[l] += static_cast<double>(f(i));
   for (unsigned offset = kSumLanes / 2; offset > 0; offset /= 2)
     for (unsigned l = 0; l < offset; ++l) lane[l] += lane[l + offset];
   return lane[0];

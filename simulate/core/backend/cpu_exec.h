@@ -93,7 +93,9 @@ class CpuExec {
     thrust::exclusive_scan(thrust::omp::par, in.data(), in.data() + in.size(), out.data());
   }
 
-  // Sum of f(i) over [0, n) in the blocked order (see blocked_sum.h).
+  // Sum of f(i) over [0, n) in the blocked order (see blocked_sum.h). Both
+  // backends call f exactly once per i, so f may also write element i (a
+  // pass and its dot product fused).
   template <class ValueAt>
   double sum(std::size_t n, const ValueAt& f) const {
     if (n == 0) return 0.0;

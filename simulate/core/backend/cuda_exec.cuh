@@ -223,7 +223,8 @@ class CudaExec {
     thrust::exclusive_scan(thrust::cuda::par.on(stream()), in.begin(), in.end(), out.begin());
   }
 
-  // Same order as CpuExec::sum (blocked_sum.h), so both backends add alike.
+  // Same order as CpuExec::sum (blocked_sum.h), so both backends add alike;
+  // f is called once per element, as there, so it may write element i.
   template <class ValueAt>
   double sum(std::size_t n, const ValueAt& f) const {
     scratch_->reserve((sum_scratch_count(n) + 1) * sizeof(double));

@@ -6,3 +6,12 @@
 #else
 #define DP_HD
 #endif
+
+// For the few small functions called once per cell in the solvers' hot
+// loops, which g++ otherwise keeps out of line: a call per cell cost the
+// 64^3 air step a fifth of its time (docs/benchmarks.md).
+#if defined(__CUDACC__)
+#define DP_HD_INLINE __host__ __device__ __forceinline__
+#else
+#define DP_HD_INLINE __attribute__((always_inline)) inline
+#endif
