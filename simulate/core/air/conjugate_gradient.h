@@ -167,10 +167,11 @@ class PoissonPcg {
  public:
   void resize(int nx, int ny, int nz, DomainFaces faces) {
     const std::size_t n = static_cast<std::size_t>(nx) * ny * nz;
-    for (auto* b : {&r_, &z_, &d_, &q_}) b->resize(n);
+    for (auto* b : {&r_, &q_}) b->resize(n);
     partial_.resize(sum_scratch_count(n) + 1);
     scalars_.resize(PcgScalars::kCount);
     multigrid_.resize(nx, ny, nz, faces);
+    for (auto* b : {&z_, &d_}) b->resize(n, multigrid_.padding());
     singular_ = !faces.any_open();
     iterations_.reset();
   }
@@ -195,9 +196,9 @@ class PoissonPcg {
     result.relative_residual = static_cast<float>(r_norm / b_norm);
     if (r_norm <= tolerance * b_norm) return result;
     precondition(exec);
-    exec.parallel_for(n, Xpay{Exec::ptr(z_), 0.0f, Exec::ptr(d_)});
+    exec.parallel_for(n, Xpay{z_.ptr(), 0.0f, d_.ptr()});
     const PcgScalars p = scalars();
-    exec.sum_into(n, ProductOf{Exec::ptr(r_), Exec::ptr(z_)}, Exec::ptr(partial_), p.s + PcgScalars::kRho);
+    exec.sum_into(n, ProductOf{Exec::ptr(r_), z_.ptr()}, Exec::ptr(partial_), p.s + PcgScalars::kRho);
     exec.parallel_for(1, StartIterations{p, b_norm, static_cast<double>(tolerance), max_iterations});
     if (Exec::ptr(x) != recorded_x_) {  // the recording bakes x in
       iterations_.reset();
@@ -223,20 +224,20 @@ class PoissonPcg {
     const std::size_t n = r_.size();
     const PcgScalars p = scalars();
     double* partial = Exec::ptr(partial_);
-    exec.sum_into(n, ApplyPoissonAndDot{multigrid_.view(0), Exec::ptr(d_), Exec::ptr(q_)}, partial,
+    exec.sum_into(n, ApplyPoissonAndDot{multigrid_.view(0), d_.ptr(), Exec::ptr(q_)}, partial,
                   p.s + PcgScalars::kDq);
-    const StepIterateAndResidual step{p, Exec::ptr(d_), Exec::ptr(q_), x, Exec::ptr(r_)};
+    const StepIterateAndResidual step{p, d_.ptr(), Exec::ptr(q_), x, Exec::ptr(r_)};
     exec.sum_into(n, StepAndResidualNorm{step}, partial, p.s + PcgScalars::kRr);
     exec.parallel_for(1, CountIterationAndTest{p});
     precondition(exec);
-    exec.sum_into(n, ProductOf{Exec::ptr(r_), Exec::ptr(z_)}, partial, p.s + PcgScalars::kRhoNext);
-    exec.parallel_for(n, UpdateDirection{p, Exec::ptr(z_), Exec::ptr(d_)});
+    exec.sum_into(n, ProductOf{Exec::ptr(r_), z_.ptr()}, partial, p.s + PcgScalars::kRhoNext);
+    exec.parallel_for(n, UpdateDirection{p, z_.ptr(), d_.ptr()});
     exec.parallel_for(1, AdvanceRho{p});
   }
 
   void precondition(const Exec& exec) {
     multigrid_.apply(exec, r_, z_);
-    if (singular_) remove_mean(exec, Exec::ptr(z_));
+    if (singular_) remove_mean(exec, z_.ptr());
   }
 
   // v -= mean of v over the unknowns; on the device, without a round trip.
@@ -250,7 +251,8 @@ class PoissonPcg {
   }
 
   MultigridPreconditioner<Exec> multigrid_;
-  Buffer<float> r_, z_, d_, q_;
+  Buffer<float> r_, q_;
+  PaddedField<Exec> z_, d_;  // read by the stencil
   Buffer<double> partial_, scalars_;
   typename Exec::Recording iterations_;
   const float* recorded_x_ = nullptr;

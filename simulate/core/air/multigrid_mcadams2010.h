@@ -121,7 +121,9 @@ struct ScaledPoissonResidual {
   const float* b;
   const float* scale;
   float* r;
-  DP_HD void operator()(std::size_t c) const { r[c] = level.unknown[c] ? scale[c] * (b[c] - level.apply(x, c)) : 0.0f; }
+  DP_HD_INLINE void operator()(std::size_t c) const {
+    r[c] = keep_if(scale[c] * (b[c] - level.apply(x, c)), level.unknown[c] != 0);
+  }
 };
 
 // b_coarse = P^T r / 2: the transpose of the prolongation, scaled so that the
@@ -260,9 +262,10 @@ class MultigridPreconditioner {
       l.unknown.resize(n);
       l.stencil.resize(n);
       l.diagonal.resize(n);
-      l.tmp.resize(n);
+      const std::size_t slab = static_cast<std::size_t>(nx) * ny;
+      l.tmp.resize(n, slab);
       if (!levels_.empty()) {  // the finest level works in the caller's r and z
-        l.x.resize(n);
+        l.x.resize(n, slab);
         l.b.resize(n);
       }
       levels_.push_back(std::move(l));
@@ -300,11 +303,14 @@ class MultigridPreconditioner {
     built_ = true;
   }
 
-  // z = M^-1 r, one V-cycle.
-  void apply(const Exec& exec, const Buffer<float>& r, Buffer<float>& z) {
-    if (z.size() != r.size()) z.resize(r.size());  // never while recording: sizes are set by then
-    cycle(exec, 0, Exec::ptr(r), Exec::ptr(z));
+  // z = M^-1 r, one V-cycle; z padded for the finest level (padding()).
+  void apply(const Exec& exec, const Buffer<float>& r, PaddedField<Exec>& z) {
+    if (z.size() != r.size()) z.resize(r.size(), padding());  // never while recording: sizes are set by then
+    cycle(exec, 0, Exec::ptr(r), z.ptr());
   }
+
+  // The padding a finest-level field needs (PaddedField).
+  std::size_t padding() const { return static_cast<std::size_t>(levels_[0].nx) * levels_[0].ny; }
 
   PoissonLevel view(std::size_t l) const {
     const Level& v = levels_[l];
@@ -315,15 +321,27 @@ class MultigridPreconditioner {
   struct Level {
     int nx = 0, ny = 0, nz = 0;
     Buffer<std::uint8_t> unknown, stencil, diagonal;
-    Buffer<float> x, b, tmp;
+    PaddedField<Exec> x, tmp;  // read by the stencil
+    Buffer<float> b;
     Buffer<float> prolongation_scale;  // levels with a coarser one
   };
 
-  // Damped Jacobi sweeps on level l's A x = b, as passes of one launcher
-  // call; from zero, or (an even number of sweeps) from the guess in x.
+  // Damped Jacobi sweeps on level l's A x = b; from zero, or (an even number
+  // of sweeps) from the guess in x. The coarsest level's many sweeps are one
+  // launcher call (one GPU launch); on the others each pass is a plain
+  // kernel, which the CPU vectorises.
   void smooth(const Exec& exec, std::size_t l, const float* b, float* x, bool from_zero, int sweeps) {
     Level& v = levels_[l];
-    exec.parallel_sweeps(v.tmp.size(), sweeps, JacobiSweeps{view(l), b, kOmega, from_zero, sweeps, x, Exec::ptr(v.tmp)});
+    const std::size_t n = v.tmp.size();
+    const JacobiSweeps passes{view(l), b, kOmega, from_zero, sweeps, x, v.tmp.ptr()};
+    if (l + 1 == levels_.size()) {
+      exec.parallel_sweeps(n, sweeps, passes);
+      return;
+    }
+    for (int s = 0; s < sweeps; ++s) {
+      if (passes.starts_from_zero(s)) exec.parallel_for(n, passes.from_zero_pass(s));
+      else exec.parallel_for(n, passes.sweep_pass(s));
+    }
   }
 
   // Solves level l's A x = b approximately: smooth, correct from the
@@ -337,11 +355,11 @@ class MultigridPreconditioner {
     smooth(exec, l, b, x, true, kSmoothingSweeps);
     const PoissonLevel p = view(l);
     const float* scale = Exec::ptr(v.prolongation_scale);
-    exec.parallel_for(v.tmp.size(), ScaledPoissonResidual{p, x, b, scale, Exec::ptr(v.tmp)});
+    exec.parallel_for(v.tmp.size(), ScaledPoissonResidual{p, x, b, scale, v.tmp.ptr()});
     Level& c = levels_[l + 1];
-    exec.parallel_for_3d(c.nx, c.ny, c.nz, RestrictResidual{p, view(l + 1), Exec::ptr(v.tmp), Exec::ptr(c.b)});
-    cycle(exec, l + 1, Exec::ptr(c.b), Exec::ptr(c.x));
-    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAndAdd{view(l + 1), p, scale, Exec::ptr(c.x), x});
+    exec.parallel_for_3d(c.nx, c.ny, c.nz, RestrictResidual{p, view(l + 1), v.tmp.ptr(), Exec::ptr(c.b)});
+    cycle(exec, l + 1, Exec::ptr(c.b), c.x.ptr());
+    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAndAdd{view(l + 1), p, scale, c.x.ptr(), x});
     smooth(exec, l, b, x, false, kSmoothingSweeps);
   }
 

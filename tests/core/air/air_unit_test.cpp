@@ -63,13 +63,16 @@ TEST(air_Multigrid, VCycleIsSymmetricPositiveDefinite) {
   ASSERT_GE(mg.level_count(), 2);
   mg.set_unknowns(exec, unknown);
   for (int trial = 0; trial < 3; ++trial) {
-    std::vector<float> x(unknown.size()), y(unknown.size()), mx, my;
+    std::vector<float> x(unknown.size()), y(unknown.size());
+    PaddedField<CpuExec> mx_field, my_field;
     for (std::size_t i = 0; i < x.size(); ++i) {
       x[i] = unknown[i] ? u(rng) : 0.0f;
       y[i] = unknown[i] ? u(rng) : 0.0f;
     }
-    mg.apply(exec, x, mx);
-    mg.apply(exec, y, my);
+    mg.apply(exec, x, mx_field);
+    mg.apply(exec, y, my_field);
+    const float* mx = mx_field.ptr();
+    const float* my = my_field.ptr();
     double ymx = 0, xmy = 0, xmx = 0, norm = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {
       ymx += static_cast<double>(y[i]) * mx[i];
