@@ -140,6 +140,12 @@ int run(const Options& opt) {
     dp::io::write_rigid_atlas_mesh(frames_dir / manifest.rigids.back().mesh_file, atlases[r].mesh, comment);
   }
 
+  // A run that starts over owns the folder from here on (its manifest and
+  // timings start again): an earlier run's checkpoints would outrank this
+  // run's own (only the newest two stay), and a --resume would continue the
+  // earlier run over this one's frames.
+  if (!resumed) dp::io::remove_checkpoints(checkpoints_dir);
+
   // Table-1 timings of every step (docs/file-formats.md, stats folder).
   const fs::path stats_dir = opt.out / "stats";
   fs::create_directories(stats_dir);
@@ -216,11 +222,6 @@ int run(const Options& opt) {
   };
 
   const std::uint64_t scene_hash = dp::io::scene_document_hash(scene.document);
-  // A run that starts over replaces an earlier run's checkpoints when it
-  // writes its first: kept, their later frames would outrank this run's own
-  // (only the newest two stay) and a --resume would continue the earlier run.
-  // Until then they stay, so starting over by mistake loses nothing.
-  bool replace_earlier_checkpoints = !resumed;
   for (int frame = first_frame; frame <= last_frame; ++frame) {
     // Frame times are independent of the step size: step until the frame's time.
     const double frame_time = frame * frame_interval;
@@ -229,8 +230,6 @@ int run(const Options& opt) {
     if (range.contains(frame)) write_frame(frame);
     // After the frame's files: a run resumed from here has them all.
     if (opt.checkpoint_every > 0 && frame > 0 && frame % opt.checkpoint_every == 0 && frame < last_frame) {
-      if (replace_earlier_checkpoints) dp::io::remove_checkpoints(checkpoints_dir);
-      replace_earlier_checkpoints = false;
       dp::io::save_checkpoint(checkpoints_dir, dp::io::Checkpoint{frame, scene_hash, simulation->state()});
     }
     frames_done = frame + 1;

@@ -44,6 +44,8 @@ void save_checkpoint(const std::filesystem::path& dir, const Checkpoint& checkpo
   }
 }
 
+// Throws where a checkpoint cannot be removed: one left behind could later
+// be resumed from, unlike the old ones save_checkpoint prunes.
 void remove_checkpoints(const std::filesystem::path& dir) {
   for (const auto& [frame, file] : listed_checkpoints(dir)) std::filesystem::remove(file);
 }

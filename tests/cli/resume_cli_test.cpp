@@ -169,21 +169,33 @@ TEST_F(ResumeCli, ResumeWithoutCheckpointStartsFromTheBeginning) {
 }
 
 // A second run into the same folder without --resume, shorter than the
-// first: its own checkpoint must be the one a later --resume finds, not the
-// first run's later ones.
+// first: a later --resume must continue it, not the first run, whose
+// later checkpoints would otherwise outrank its own.
 TEST_F(ResumeCli, RunStartedOverReplacesTheEarlierRunsCheckpoints) {
   const fs::path out = work_ / "out";
+  const auto checkpoints_left = [&] {
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(out / "checkpoints")) left.push_back(entry.path().filename().string());
+    return left;
+  };
   const test::CommandResult first = run(out);
   ASSERT_EQ(first.exit_code, 0) << first.output;
-  ASSERT_GT(io::find_newest_checkpoint(out / "checkpoints").checkpoint->frame, 1);
+  const io::NewestCheckpoint newest = io::find_newest_checkpoint(out / "checkpoints");
+  ASSERT_TRUE(newest.checkpoint.has_value());
+  ASSERT_GT(newest.checkpoint->frame, 1);
+
+  // Frames 0-2 checkpoint after frame 1 only: that is all that is left.
   const test::CommandResult again = run(out, {"--frames", "0-2"});
   ASSERT_EQ(again.exit_code, 0) << again.output;
-  std::vector<std::string> left;
-  for (const auto& entry : fs::directory_iterator(out / "checkpoints")) left.push_back(entry.path().filename().string());
-  EXPECT_EQ(left, std::vector<std::string>{io::checkpoint_file(out / "checkpoints", 1).filename().string()});
+  EXPECT_EQ(checkpoints_left(), std::vector<std::string>{io::checkpoint_file(out / "checkpoints", 1).filename().string()});
   const test::CommandResult resumed = run(out, {"--resume", "--frames", "0-2"});
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("resuming after frame 1 "), std::string::npos) << resumed.output;
+
+  // Frames 0-1 write no checkpoint at all: none is left to resume from.
+  const test::CommandResult shortest = run(out, {"--frames", "0-1"});
+  ASSERT_EQ(shortest.exit_code, 0) << shortest.output;
+  EXPECT_TRUE(checkpoints_left().empty());
 }
 
 TEST_F(ResumeCli, ChangedSceneIsRefused) {

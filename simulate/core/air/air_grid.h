@@ -105,7 +105,10 @@ struct AirCellsView {
 template <class Exec>
 class PartTimer {
  public:
-  PartTimer(const Exec& exec, bool on) : exec_(exec), on_(on), last_(std::chrono::steady_clock::now()) {}
+  PartTimer(const Exec& exec, bool on) : exec_(exec), on_(on) {
+    if (on_) exec_.synchronize();  // work queued before the step is not the first part's
+    last_ = std::chrono::steady_clock::now();
+  }
   void lap(double& seconds) {
     if (!on_) return;
     exec_.synchronize();

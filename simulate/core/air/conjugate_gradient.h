@@ -86,7 +86,8 @@ struct StepIterateAndResidual {
 };
 
 // q = A d, returning d.q for a sum: the operator and the dot product in one
-// pass (the launchers' sums call f once per element, so it may write it).
+// pass (the launchers' sums call f once per element, so it may write it);
+// as a plain kernel it only writes q.
 struct ApplyPoissonAndDot {
   PoissonLevel level;
   const float* d;
@@ -224,10 +225,17 @@ class PoissonPcg {
     const std::size_t n = r_.size();
     const PcgScalars p = scalars();
     double* partial = Exec::ptr(partial_);
-    exec.sum_into(n, ApplyPoissonAndDot{multigrid_.view(0), d_.ptr(), Exec::ptr(q_)}, partial,
-                  p.s + PcgScalars::kDq);
+    const ApplyPoissonAndDot apply{multigrid_.view(0), d_.ptr(), Exec::ptr(q_)};
     const StepIterateAndResidual step{p, d_.ptr(), Exec::ptr(q_), x, Exec::ptr(r_)};
-    exec.sum_into(n, StepAndResidualNorm{step}, partial, p.s + PcgScalars::kRr);
+    if constexpr (Exec::kFusesPassesIntoSums) {
+      exec.sum_into(n, apply, partial, p.s + PcgScalars::kDq);
+      exec.sum_into(n, StepAndResidualNorm{step}, partial, p.s + PcgScalars::kRr);
+    } else {  // the same values, each pass with a thread per element
+      exec.parallel_for(n, apply);
+      exec.sum_into(n, ProductOf{d_.ptr(), Exec::ptr(q_)}, partial, p.s + PcgScalars::kDq);
+      exec.parallel_for(n, step);
+      exec.sum_into(n, ProductOf{Exec::ptr(r_), Exec::ptr(r_)}, partial, p.s + PcgScalars::kRr);
+    }
     exec.parallel_for(1, CountIterationAndTest{p});
     precondition(exec);
     exec.sum_into(n, ProductOf{Exec::ptr(r_), z_.ptr()}, partial, p.s + PcgScalars::kRhoNext);

@@ -262,7 +262,7 @@ class MultigridPreconditioner {
       l.unknown.resize(n);
       l.stencil.resize(n);
       l.diagonal.resize(n);
-      const std::size_t slab = static_cast<std::size_t>(nx) * ny;
+      const std::size_t slab = static_cast<std::size_t>(nx) * ny;  // PoissonLevel::slab of this level
       l.tmp.resize(n, slab);
       if (!levels_.empty()) {  // the finest level works in the caller's r and z
         l.x.resize(n, slab);
@@ -305,12 +305,13 @@ class MultigridPreconditioner {
 
   // z = M^-1 r, one V-cycle; z padded for the finest level (padding()).
   void apply(const Exec& exec, const Buffer<float>& r, PaddedField<Exec>& z) {
-    if (z.size() != r.size()) z.resize(r.size(), padding());  // never while recording: sizes are set by then
+    // Never while recording: sizes are set by then.
+    if (z.size() != r.size() || z.padding() < padding()) z.resize(r.size(), padding());
     cycle(exec, 0, Exec::ptr(r), z.ptr());
   }
 
   // The padding a finest-level field needs (PaddedField).
-  std::size_t padding() const { return static_cast<std::size_t>(levels_[0].nx) * levels_[0].ny; }
+  std::size_t padding() const { return view(0).slab(); }
 
   PoissonLevel view(std::size_t l) const {
     const Level& v = levels_[l];

@@ -6,10 +6,12 @@
 // domain face is Dirichlet (phi = 0 outside), and a face to a wall or a
 // non-air cell is Neumann (no term). Symmetric, positive (semi)definite:
 // singular only when no cell touches an open face.
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 
 #include "air/cell_kind.h"
+#include "air/padded_field.h"
 #include "backend/host_device.h"
 
 namespace dp {
@@ -30,27 +32,6 @@ DP_HD_INLINE float keep_if(float v, unsigned bit) {
 #endif
 }
 
-// A level's vector that the stencil may read up to one slab (nx ny values)
-// before its first and after its last value: PoissonLevel::apply then loads
-// all six neighbours unconditionally and selects, which the CPU vectorises
-// (a sweep 2.8 times faster than loads behind bit tests, same values). The
-// padding is allocated, never written; what it holds is never selected.
-template <class Exec>
-class PaddedField {
- public:
-  void resize(std::size_t n, std::size_t pad) {
-    n_ = n;
-    pad_ = pad;
-    storage_.resize(n + 2 * pad);
-  }
-  std::size_t size() const { return n_; }
-  float* ptr() { return Exec::ptr(storage_) + pad_; }
-  const float* ptr() const { return Exec::ptr(storage_) + pad_; }
-
- private:
-  typename Exec::template Buffer<float> storage_;
-  std::size_t n_ = 0, pad_ = 0;
-};
 
 struct PoissonLevel {
   int nx, ny, nz;
@@ -96,26 +77,30 @@ struct PoissonLevel {
 
   DP_HD std::size_t slab() const { return static_cast<std::size_t>(nx) * ny; }
 
-  // (A x)_c; zero outside the unknowns. A cell with no face to anything
-  // (diagonal 0) has phi = 0: it is given the row of the identity. x must be
-  // a PaddedField's (padding of at least slab()): all six neighbours are
-  // loaded and the stencil's bits select them, without a branch.
+  // The diagonal as stored, or 1 where it is 0: a cell with no face to
+  // anything has phi = 0 and is given the row of the identity.
+  DP_HD_INLINE float diagonal_or_one(std::size_t c) const {
+    const unsigned stored = diagonal[c];
+    return static_cast<float>(stored > 1u ? stored : 1u);
+  }
+
+  // (A x)_c; zero outside the unknowns. x must be a PaddedField's (padding
+  // of at least slab()): all six neighbours are loaded and the stencil's
+  // bits select them, without a branch.
   DP_HD_INLINE float apply(const float* x, std::size_t c, float* diagonal_out = nullptr) const {
     const unsigned s = stencil[c];
-    const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
-    const float x_low = x[c - 1], x_high = x[c + 1], y_low = x[c - row], y_high = x[c + row], z_low = x[c - slab],
-                z_high = x[c + slab];
+    const std::ptrdiff_t row = nx, slab = row * ny;
+    const float* at = x + c;  // neighbours by signed offsets: at c = 0 they lie in the padding
     float off = 0.0f;
-    off += keep_if(x_low, s & 1u);
-    off += keep_if(x_high, (s >> 1) & 1u);
-    off += keep_if(y_low, (s >> 2) & 1u);
-    off += keep_if(y_high, (s >> 3) & 1u);
-    off += keep_if(z_low, (s >> 4) & 1u);
-    off += keep_if(z_high, (s >> 5) & 1u);
-    const unsigned stored = diagonal[c];
-    const float d = static_cast<float>(stored > 1u ? stored : 1u);
+    off += keep_if(at[-1], s & 1u);
+    off += keep_if(at[1], (s >> 1) & 1u);
+    off += keep_if(at[-row], (s >> 2) & 1u);
+    off += keep_if(at[row], (s >> 3) & 1u);
+    off += keep_if(at[-slab], (s >> 4) & 1u);
+    off += keep_if(at[slab], (s >> 5) & 1u);
+    const float d = diagonal_or_one(c);
     if (diagonal_out) *diagonal_out = d;
-    return keep_if(d * x[c] - off, (s >> 7) & 1u);
+    return keep_if(d * at[0] - off, (s >> 7) & 1u);
   }
 
   // The same for an x without padding (the caller's first guess): each
@@ -131,8 +116,7 @@ struct PoissonLevel {
     if (s & 8u) off += x[c + row];
     if (s & 16u) off += x[c - slab];
     if (s & 32u) off += x[c + slab];
-    const float d = diagonal[c] ? static_cast<float>(diagonal[c]) : 1.0f;
-    return d * x[c] - off;
+    return diagonal_or_one(c) * x[c] - off;
   }
 };
 
@@ -192,9 +176,7 @@ struct JacobiSweepFromZero {
   float omega;
   float* out;
   DP_HD_INLINE void operator()(std::size_t c) const {
-    const unsigned stored = level.diagonal[c];
-    const float diagonal = static_cast<float>(stored > 1u ? stored : 1u);
-    out[c] = keep_if(omega * b[c] / diagonal, level.unknown[c] != 0);
+    out[c] = keep_if(omega * b[c] / level.diagonal_or_one(c), level.unknown[c] != 0);
   }
 };
 

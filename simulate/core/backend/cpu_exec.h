@@ -26,6 +26,11 @@ class CpuExec {
   // CPU a check costs nothing and an iteration past convergence a lot.
   static constexpr int kIterationsPerCheck = 1;
 
+  // A pass and the dot product of its result, fused into one sum where the
+  // sum's f writes the element: on the CPU one walk over memory instead of
+  // two (and one thread wake-up).
+  static constexpr bool kFusesPassesIntoSums = true;
+
   explicit CpuExec(int threads) : threads_(threads > 0 ? threads : 1) { omp_set_num_threads(threads_); }
 
   int threads() const { return threads_; }

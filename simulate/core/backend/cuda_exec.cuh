@@ -164,6 +164,10 @@ class CudaExec {
   // many iterations; the iterations between run as one recorded graph.
   static constexpr int kIterationsPerCheck = 4;
 
+  // No: a sum runs one warp per 1024 elements, so a fused stencil pass
+  // would run on a thirty-second of the threads a pass of its own gets.
+  static constexpr bool kFusesPassesIntoSums = false;
+
   explicit CudaExec(int device = 0) {
     cuda_detail::check(cudaSetDevice(device), "cudaSetDevice");
     stream_ = std::make_shared<cuda_detail::Stream>();
