@@ -229,9 +229,8 @@ int run(const Options& opt) {
     timings.flush();
     if (range.contains(frame)) write_frame(frame);
     // After the frame's files: a run resumed from here has them all.
-    if (opt.checkpoint_every > 0 && frame > 0 && frame % opt.checkpoint_every == 0 && frame < last_frame) {
+    if (opt.checkpoint_every > 0 && frame > 0 && frame % opt.checkpoint_every == 0 && frame < last_frame)
       dp::io::save_checkpoint(checkpoints_dir, dp::io::Checkpoint{frame, scene_hash, simulation->state()});
-    }
     frames_done = frame + 1;
     progress.update(frames_done, progress_detail());
   }

@@ -32,7 +32,6 @@ DP_HD_INLINE float keep_if(float v, unsigned bit) {
 #endif
 }
 
-
 struct PoissonLevel {
   int nx, ny, nz;
   const std::uint8_t* unknown;  // 1 where phi is solved for
