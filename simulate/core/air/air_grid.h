@@ -201,7 +201,9 @@ class AirGrid {
     timer.lap(report.seconds.velocity);
     report.diffusion_substeps = diffuse(exec, dt);
     timer.lap(report.seconds.diffusion);
-    const PcgResult p = project(exec);
+    // advect_velocity left the prescribed faces enforced, and diffusion
+    // moves no velocity.
+    const PcgResult p = project_enforced(exec);
     timer.lap(report.seconds.projection);
     report.projection_iterations = p.iterations;
     report.projection_residual = p.relative_residual;
@@ -227,7 +229,8 @@ class AirGrid {
   // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt.
   void add_forces(const Exec& exec, float dt) {
     for (int a = 0; a < 3; ++a)
-      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), AddBuoyancy{grid_, a, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt,
+      if (buoyancy_.up[a] != 0.0f)  // buoyancy acts along up only (often one axis)
+        exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), AddBuoyancy{grid_, a, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt,
                                                   Exec::ptr(u_[a])});
     if (settings_.vorticity_epsilon > 0) {
       exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, CellCentredVelocity{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]),
@@ -311,8 +314,13 @@ class AirGrid {
   // Makes the velocity divergence-free in the air cells. The last step's
   // phi is the first guess: the pressure changes little between steps.
   PcgResult project(const Exec& exec) {
-    const std::size_t n = grid_.cell_count();
     enforce_boundaries(exec);
+    return project_enforced(exec);
+  }
+
+  // project() where every prescribed face already holds its value.
+  PcgResult project_enforced(const Exec& exec) {
+    const std::size_t n = grid_.cell_count();
     exec.parallel_for(n, MarkAirUnknowns{Exec::ptr(kind_), Exec::ptr(unknown_)});
     pcg_.set_unknowns(exec, unknown_);
     exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeProjectionRhs{cells(), Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), Exec::ptr(rhs_)});

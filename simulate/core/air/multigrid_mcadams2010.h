@@ -47,15 +47,15 @@ struct CoarsenUnknown {
 // face: weight 1/2). Treating it as zero instead, as if every wall were
 // open, halved the correction next to the walls and cost CG twice the
 // iterations (docs/benchmarks.md, air step).
-DP_HD inline float prolongation_weight(int fine, int coarse, int nc, bool open_low, bool open_high) {
+// Written as selects without branches, so that the transfer passes, which
+// call it per point, still vectorise.
+DP_HD_INLINE float prolongation_weight(int fine, int coarse, int nc, bool open_low, bool open_high) {
   const int near = fine >> 1;
-  const int far = (fine & 1) ? near + 1 : near - 1;
-  if (coarse == near) {
-    if (far < 0) return open_low ? 0.5f : 1.0f;
-    if (far >= nc) return open_high ? 0.5f : 1.0f;
-    return 0.75f;
-  }
-  return coarse == far ? 0.25f : 0.0f;
+  const int far = near + 2 * (fine & 1) - 1;
+  const bool below = far < 0, above = far >= nc;
+  const float edge = (below ? open_low : open_high) ? 0.5f : 1.0f;
+  const float near_weight = (below | above) ? edge : 0.75f;
+  return coarse == near ? near_weight : (coarse == far ? 0.25f : 0.0f);
 }
 
 // prolongation_weight along one axis of the coarse level's grid.
@@ -126,98 +126,148 @@ struct ScaledPoissonResidual {
   }
 };
 
-// b_coarse = P^T r / 2: the transpose of the prolongation, scaled so that the
-// re-discretised coarse operator (cell size 2 dx, unscaled form) sees the
-// fine residual's level: A_2h ~ 4 dx^2 (-lap), A_h ~ dx^2 (-lap), and P^T
-// sums 8 fine cells.
-struct RestrictResidual {
-  PoissonLevel fine, coarse;
-  const float* r;
-  float* b;
-  DP_HD void operator()(int I, int J, int K) const {
-    const std::size_t c = coarse.index(I, J, K);
-    if (!coarse.unknown[c]) {
-      b[c] = 0.0f;
-      return;
+// The four fine cells 2C-1 .. 2C+2 that coarse cell C gathers from along one
+// axis of nf fine cells, with their prolongation weights (prolongation_weight)
+// as restriction's; a fine cell beyond the grid gets weight 0 and the index
+// of the nearest one, so that every read stays inside.
+struct RestrictionAxis {
+  int fine[4];
+  float weight[4];
+  DP_HD_INLINE static RestrictionAxis at(int coarse, int nf, int nc, bool open_low, bool open_high) {
+    RestrictionAxis a;
+    for (int d = 0; d < 4; ++d) {
+      const int f = 2 * coarse - 1 + d;
+      const bool inside = (f >= 0) & (f < nf);
+      a.fine[d] = f < 0 ? 0 : (f < nf ? f : nf - 1);
+      a.weight[d] = inside ? prolongation_weight(f, coarse, nc, open_low, open_high) : 0.0f;
     }
-    const bool interior = 2 * I >= 1 && 2 * I + 2 < fine.nx && 2 * J >= 1 && 2 * J + 2 < fine.ny && 2 * K >= 1 &&
-                          2 * K + 2 < fine.nz;
-    b[c] = 0.5f * (interior ? interior_sum(I, J, K) : boundary_sum(I, J, K));
+    return a;
   }
-
-  // All 4 x 4 x 4 fine cells exist: walk them by offsets, with the axis
-  // weights of prolongation_weight (1/4, 3/4, 3/4, 1/4) as constants; the
-  // terms and their order are those of boundary_sum.
-  DP_HD float interior_sum(int I, int J, int K) const {
-    const float w[4] = {0.25f, 0.75f, 0.75f, 0.25f};
-    const std::size_t row = static_cast<std::size_t>(fine.nx), slab = row * fine.ny;
-    const float* base = r + fine.index(2 * I - 1, 2 * J - 1, 2 * K - 1);
-    float s = 0.0f;
-    for (int dk = 0; dk < 4; ++dk)
-      for (int dj = 0; dj < 4; ++dj) {
-        const float wjk = w[dk] * w[dj];
-        const float* line = base + dk * slab + dj * row;
-        for (int di = 0; di < 4; ++di) s += wjk * w[di] * line[di];
-      }
-    return s;
-  }
-
-  DP_HD float boundary_sum(int I, int J, int K) const {
-    float s = 0.0f;
-    for (int fk = 2 * K - 1; fk <= 2 * K + 2; ++fk) {
-      if (fk < 0 || fk >= fine.nz) continue;
-      const float wk = prolongation_weight(coarse, 2, fk, K);
-      for (int fj = 2 * J - 1; fj <= 2 * J + 2; ++fj) {
-        if (fj < 0 || fj >= fine.ny) continue;
-        const float wjk = wk * prolongation_weight(coarse, 1, fj, J);
-        for (int fi = 2 * I - 1; fi <= 2 * I + 2; ++fi) {
-          if (fi < 0 || fi >= fine.nx) continue;
-          s += wjk * prolongation_weight(coarse, 0, fi, I) * r[fine.index(fi, fj, fk)];
-        }
-      }
-    }
-    return s;
+  // The weighted sum of four values, as a tree: (w0 v0 + w3 v3) + (w1 v1 + w2 v2).
+  DP_HD_INLINE float sum(float v0, float v1, float v2, float v3) const {
+    return (weight[0] * v0 + weight[3] * v3) + (weight[1] * v1 + weight[2] * v2);
   }
 };
 
-// x_fine += P e_coarse on the fine unknowns, P scaled by ProlongationScale.
-struct ProlongAndAdd {
-  PoissonLevel coarse, fine;
+// The shapes a transfer between a fine level and the next coarser one
+// passes through: one axis at a time is coarsened (restriction) or refined
+// (prolongation). Box (X, Y, Z) is stored x fastest.
+struct TransferBoxes {
+  PoissonLevel fine, coarse;
+  // Coarse along x only, then along x and y (restriction's order); fine
+  // along x only, then along x and y (prolongation's).
+  DP_HD std::size_t coarse_x(int I, int j, int k) const { return (static_cast<std::size_t>(k) * fine.ny + j) * coarse.nx + I; }
+  DP_HD std::size_t coarse_xy(int I, int J, int k) const { return (static_cast<std::size_t>(k) * coarse.ny + J) * coarse.nx + I; }
+  DP_HD std::size_t fine_x(int i, int J, int K) const { return (static_cast<std::size_t>(K) * coarse.ny + J) * fine.nx + i; }
+  DP_HD std::size_t fine_xy(int i, int j, int K) const { return (static_cast<std::size_t>(K) * fine.ny + j) * fine.nx + i; }
+  // Values each intermediate box holds: the larger of the two shapes that
+  // share a buffer.
+  std::size_t wide_size() const {
+    const std::size_t r = static_cast<std::size_t>(coarse.nx) * fine.ny * fine.nz;
+    const std::size_t p = static_cast<std::size_t>(fine.nx) * fine.ny * coarse.nz;
+    return r > p ? r : p;
+  }
+  std::size_t narrow_size() const {
+    const std::size_t r = static_cast<std::size_t>(coarse.nx) * coarse.ny * fine.nz;
+    const std::size_t p = static_cast<std::size_t>(fine.nx) * coarse.ny * coarse.nz;
+    return r > p ? r : p;
+  }
+  DP_HD bool open(int axis, int side) const { return coarse.faces.open(axis, side); }
+};
+
+// b_coarse = P^T r / 2: the transpose of the prolongation, scaled so that the
+// re-discretised coarse operator (cell size 2 dx, unscaled form) sees the
+// fine residual's level: A_2h ~ 4 dx^2 (-lap), A_h ~ dx^2 (-lap), and P^T
+// sums 8 fine cells. P is separable, so restriction is three passes, along
+// x, y and z, each summing four values as a tree. One pass of 64-term sums
+// per coarse cell took as long as five Jacobi sweeps: each sum a chain of
+// additions waiting on the one before, and no pass that vectorised.
+struct RestrictAlongX {
+  TransferBoxes box;
+  const float* r;  // fine
+  float* out;      // coarse_x
+  DP_HD void operator()(int I, int j, int k) const {
+    const RestrictionAxis x = RestrictionAxis::at(I, box.fine.nx, box.coarse.nx, box.open(0, 0), box.open(0, 1));
+    const float* row = r + box.fine.index(0, j, k);
+    out[box.coarse_x(I, j, k)] = x.sum(row[x.fine[0]], row[x.fine[1]], row[x.fine[2]], row[x.fine[3]]);
+  }
+};
+
+struct RestrictAlongY {
+  TransferBoxes box;
+  const float* in;  // coarse_x
+  float* out;       // coarse_xy
+  DP_HD void operator()(int I, int J, int k) const {
+    const RestrictionAxis y = RestrictionAxis::at(J, box.fine.ny, box.coarse.ny, box.open(1, 0), box.open(1, 1));
+    out[box.coarse_xy(I, J, k)] = y.sum(in[box.coarse_x(I, y.fine[0], k)], in[box.coarse_x(I, y.fine[1], k)],
+                                        in[box.coarse_x(I, y.fine[2], k)], in[box.coarse_x(I, y.fine[3], k)]);
+  }
+};
+
+// The last pass writes b on the coarse unknowns and 0 elsewhere.
+struct RestrictAlongZ {
+  TransferBoxes box;
+  const float* in;  // coarse_xy
+  float* b;         // coarse
+  DP_HD void operator()(int I, int J, int K) const {
+    const RestrictionAxis z = RestrictionAxis::at(K, box.fine.nz, box.coarse.nz, box.open(2, 0), box.open(2, 1));
+    const std::size_t c = box.coarse.index(I, J, K);
+    const float sum = z.sum(in[box.coarse_xy(I, J, z.fine[0])], in[box.coarse_xy(I, J, z.fine[1])],
+                            in[box.coarse_xy(I, J, z.fine[2])], in[box.coarse_xy(I, J, z.fine[3])]);
+    b[c] = keep_if(0.5f * sum, box.coarse.unknown[c] != 0);
+  }
+};
+
+// The two coarse cells fine cell `fine` takes a share of along one axis, near
+// and far, with their prolongation_weight; where the far one lies beyond
+// the grid it gets weight 0 and the near one's index.
+struct ProlongationAxis {
+  int near, far;
+  float w_near, w_far;
+  DP_HD_INLINE static ProlongationAxis at(int fine, int nc, bool open_low, bool open_high) {
+    int pair[2];
+    coarse_pair(fine, pair);
+    const bool far_inside = (pair[1] >= 0) & (pair[1] < nc);
+    return ProlongationAxis{pair[0], far_inside ? pair[1] : pair[0], prolongation_weight(fine, pair[0], nc, open_low, open_high),
+                            far_inside ? 0.25f : 0.0f};
+  }
+  DP_HD_INLINE float lerp(float near_value, float far_value) const { return w_near * near_value + w_far * far_value; }
+};
+
+// x_fine += P e_coarse on the fine unknowns, P scaled by ProlongationScale:
+// like restriction, three separable passes, along x, y, then z.
+struct ProlongAlongX {
+  TransferBoxes box;
+  const float* e;  // coarse
+  float* out;      // fine_x
+  DP_HD void operator()(int i, int J, int K) const {
+    const ProlongationAxis x = ProlongationAxis::at(i, box.coarse.nx, box.open(0, 0), box.open(0, 1));
+    const float* row = e + box.coarse.index(0, J, K);
+    out[box.fine_x(i, J, K)] = x.lerp(row[x.near], row[x.far]);
+  }
+};
+
+struct ProlongAlongY {
+  TransferBoxes box;
+  const float* in;  // fine_x
+  float* out;       // fine_xy
+  DP_HD void operator()(int i, int j, int K) const {
+    const ProlongationAxis y = ProlongationAxis::at(j, box.coarse.ny, box.open(1, 0), box.open(1, 1));
+    out[box.fine_xy(i, j, K)] = y.lerp(in[box.fine_x(i, y.near, K)], in[box.fine_x(i, y.far, K)]);
+  }
+};
+
+// Adds +0 where the fine cell is no unknown (x holds +0 there).
+struct ProlongAlongZAndAdd {
+  TransferBoxes box;
   const float* scale;
-  const float* e;
-  float* x;
+  const float* in;  // fine_xy
+  float* x;         // fine
   DP_HD void operator()(int i, int j, int k) const {
-    const std::size_t f = fine.index(i, j, k);
-    if (!fine.unknown[f]) return;
-    int ci[2], cj[2], ck[2];
-    coarse_pair(i, ci);
-    coarse_pair(j, cj);
-    coarse_pair(k, ck);
-    const bool interior = ci[0] >= 1 && ci[0] + 1 < coarse.nx && cj[0] >= 1 && cj[0] + 1 < coarse.ny && ck[0] >= 1 &&
-                          ck[0] + 1 < coarse.nz;
-    x[f] += scale[f] * (interior ? interior_sum(ci, cj, ck) : boundary_sum(i, j, k));
-  }
-
-  // All eight coarse cells exist: the terms and order of boundary_sum,
-  // reached by offsets from the nearest coarse cell.
-  DP_HD float interior_sum(const int* ci, const int* cj, const int* ck) const {
-    const std::ptrdiff_t row = coarse.nx, slab = row * coarse.ny;
-    const std::ptrdiff_t d[3] = {ci[1] - ci[0], (cj[1] - cj[0]) * row, (ck[1] - ck[0]) * slab};
-    const float* near = e + coarse.index(ci[0], cj[0], ck[0]);
-    float s = 0.0f;
-    for (int c = 0; c < 2; ++c)
-      for (int b = 0; b < 2; ++b)
-        for (int a = 0; a < 2; ++a) {
-          const float w = (a ? 0.25f : 0.75f) * (b ? 0.25f : 0.75f) * (c ? 0.25f : 0.75f);
-          s += w * near[a * d[0] + b * d[1] + c * d[2]];
-        }
-    return s;
-  }
-
-  DP_HD float boundary_sum(int i, int j, int k) const {
-    float s = 0.0f;
-    for_each_prolongation_term(coarse, i, j, k, [&](float w, std::size_t c) { s += w * e[c]; });
-    return s;
+    const ProlongationAxis z = ProlongationAxis::at(k, box.coarse.nz, box.open(2, 0), box.open(2, 1));
+    const std::size_t f = box.fine.index(i, j, k);
+    const float e = z.lerp(in[box.fine_xy(i, j, z.near)], in[box.fine_xy(i, j, z.far)]);
+    x[f] += keep_if(scale[f] * e, box.fine.unknown[f] != 0);
   }
 };
 
@@ -272,9 +322,13 @@ class MultigridPreconditioner {
       // Halve while every axis keeps at least four cells.
       if (nx < 8 || ny < 8 || nz < 8) break;
       levels_.back().prolongation_scale.resize(n);
+      const PoissonLevel fine_shape{nx, ny, nz, nullptr, faces, nullptr, nullptr};
       nx = (nx + 1) / 2;
       ny = (ny + 1) / 2;
       nz = (nz + 1) / 2;
+      const TransferBoxes box{fine_shape, PoissonLevel{nx, ny, nz, nullptr, faces, nullptr, nullptr}};
+      levels_.back().transfer_wide.resize(box.wide_size());
+      levels_.back().transfer_narrow.resize(box.narrow_size());
     }
     faces_ = faces;
     built_ = false;
@@ -325,6 +379,7 @@ class MultigridPreconditioner {
     PaddedField<Exec> x, tmp;  // read by the stencil
     Buffer<float> b;
     Buffer<float> prolongation_scale;  // levels with a coarser one
+    Buffer<float> transfer_wide, transfer_narrow;  // likewise: TransferBoxes' intermediates
   };
 
   // Damped Jacobi sweeps on level l's A x = b; from zero, or (an even number
@@ -358,9 +413,16 @@ class MultigridPreconditioner {
     const float* scale = Exec::ptr(v.prolongation_scale);
     exec.parallel_for(v.tmp.size(), ScaledPoissonResidual{p, x, b, scale, v.tmp.ptr()});
     Level& c = levels_[l + 1];
-    exec.parallel_for_3d(c.nx, c.ny, c.nz, RestrictResidual{p, view(l + 1), v.tmp.ptr(), Exec::ptr(c.b)});
+    const TransferBoxes box{p, view(l + 1)};
+    float* wide = Exec::ptr(v.transfer_wide);
+    float* narrow = Exec::ptr(v.transfer_narrow);
+    exec.parallel_for_3d(c.nx, v.ny, v.nz, RestrictAlongX{box, v.tmp.ptr(), wide});
+    exec.parallel_for_3d(c.nx, c.ny, v.nz, RestrictAlongY{box, wide, narrow});
+    exec.parallel_for_3d(c.nx, c.ny, c.nz, RestrictAlongZ{box, narrow, Exec::ptr(c.b)});
     cycle(exec, l + 1, Exec::ptr(c.b), c.x.ptr());
-    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAndAdd{view(l + 1), p, scale, c.x.ptr(), x});
+    exec.parallel_for_3d(v.nx, c.ny, c.nz, ProlongAlongX{box, c.x.ptr(), narrow});
+    exec.parallel_for_3d(v.nx, v.ny, c.nz, ProlongAlongY{box, narrow, wide});
+    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAlongZAndAdd{box, scale, wide, x});
     smooth(exec, l, b, x, false, kSmoothingSweeps);
   }
 

@@ -75,15 +75,21 @@ struct CellOutflowSpeed {
   DP_HD float operator()(std::size_t row) const {
     const int j = static_cast<int>(row % grid.ny), k = static_cast<int>(row / grid.ny);
     float largest = 0.0f;
-    for (int i = 0; i < grid.nx; ++i) largest = fmaxf(largest, at(i, j, k));
+    for (int i = 0; i < grid.nx; ++i) {
+      const float s = at(i, j, k);
+      largest = s > largest ? s : largest;
+    }
     return largest;
   }
   DP_HD float at(int i, int j, int k) const {
-    const float x = fmaxf(-u[grid.face(0, i, j, k)], 0.0f) + fmaxf(u[grid.face(0, i + 1, j, k)], 0.0f);
-    const float y = fmaxf(-v[grid.face(1, i, j, k)], 0.0f) + fmaxf(v[grid.face(1, i, j + 1, k)], 0.0f);
-    const float z = fmaxf(-w[grid.face(2, i, j, k)], 0.0f) + fmaxf(w[grid.face(2, i, j, k + 1)], 0.0f);
+    const float x = positive_part(-u[grid.face(0, i, j, k)]) + positive_part(u[grid.face(0, i + 1, j, k)]);
+    const float y = positive_part(-v[grid.face(1, i, j, k)]) + positive_part(v[grid.face(1, i, j + 1, k)]);
+    const float z = positive_part(-w[grid.face(2, i, j, k)]) + positive_part(w[grid.face(2, i, j, k + 1)]);
     return x + y + z;
   }
+  // max(s, 0), 0 for NaN as fmaxf gives; a compare, where g++ calls libm's
+  // fmaxf unless told that no NaN occurs.
+  DP_HD static float positive_part(float s) { return s > 0.0f ? s : 0.0f; }
 };
 
 // Each face's flux, once (the two cells beside it read the same value).

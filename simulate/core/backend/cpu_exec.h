@@ -58,7 +58,10 @@ class CpuExec {
   template <class F>
   void parallel_for(std::size_t n, const F& f) const {
     if (!uses_threads(n)) {
-      for (std::size_t i = 0; i < n; ++i) f(i);
+      // A local copy: no store of the loop can change the functor's
+      // pointers, so g++ vectorises the loop as it does the threaded one.
+      const F local = f;
+      for (std::size_t i = 0; i < n; ++i) local(i);
       return;
     }
     const std::int64_t count = static_cast<std::int64_t>(n);
