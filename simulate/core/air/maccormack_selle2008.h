@@ -20,7 +20,7 @@ struct MacCormackCorrect {
   DP_HD void operator()(int i, int j, int k) const {
     const std::size_t n = source.index(i, j, k);
     T lo, hi;
-    source.sample(trace_back<Points>(velocity, i, j, k, cells_per_speed), &lo, &hi);
+    source.template sample<OneLane<T>>(trace_back<Points, OneLane<T>>(velocity, i, j, k, cells_per_speed), &lo, &hi);
     const T v = forward[n] + static_cast<T>(0.5) * (source.value[n] - backward[n]);
     out[n] = v < lo ? lo : (v > hi ? hi : v);
   }

@@ -4,6 +4,8 @@
 // through the velocity field with the midpoint rule. Unconditionally stable;
 // used for velocity and temperature. MacCormack's correction on top of it is
 // in maccormack_selle2008.h.
+#include <type_traits>
+
 #include "air/staggered_sampling.h"
 
 namespace dp {
@@ -11,14 +13,18 @@ namespace dp {
 // Where the fluid at p was a time ago; `cells_per_speed` = dt / dx, so that
 // velocity times it is a displacement in cells (negative: traces forwards).
 // p is point (i, j, k) of lattice `Points` (mac_shift), where the first
-// velocity sample needs no corner search (LatticePointVelocity).
-template <int Points>
-DP_HD_INLINE GridPoint trace_back(const FaceVelocity& velocity, int i, int j, int k, float cells_per_speed) {
-  GridPoint p{i, j, k, mac_shift<Points>()};
-  GridPoint mid = p;
-  mid.offset -= (0.5f * cells_per_speed) * LatticePointVelocity<Points>::at(velocity, i, j, k);
-  p.offset -= cells_per_speed * velocity.at(mid);
-  return p;
+// velocity sample needs no corner search (LatticePointVelocity); for L,
+// points i, i + 1, ... of the row.
+template <int Points, class L = OneLane<float>>
+DP_HD_INLINE GridPointOf<L> trace_back(const FaceVelocity& velocity, int i, int j, int k, float cells_per_speed) {
+  constexpr Vec3 shift = mac_shift<Points>();
+  const float half = 0.5f * cells_per_speed;
+  const VelocityOf<L> at_point = LatticePointVelocity<Points>::template at<L>(velocity, i, j, k);
+  const GridPointOf<L> mid{L::consecutive(i), L::ints(j),           L::ints(k),
+                           shift.x - half * at_point.x, shift.y - half * at_point.y, shift.z - half * at_point.z};
+  const VelocityOf<L> at_mid = velocity.at<L>(mid);
+  return GridPointOf<L>{mid.i, mid.j, mid.k, shift.x - cells_per_speed * at_mid.x, shift.y - cells_per_speed * at_mid.y,
+                        shift.z - cells_per_speed * at_mid.z};
 }
 
 // out[n] = source(trace_back(x_n)) for every point x_n of source's lattice,
@@ -30,8 +36,20 @@ struct AdvectSemiLagrangian {
   float cells_per_speed;  // dt / dx
   T* out;
 
-  DP_HD void operator()(int i, int j, int k) const {
-    out[source.index(i, j, k)] = source.sample(trace_back<Points>(velocity, i, j, k, cells_per_speed));
+  DP_HD void operator()(int i, int j, int k) const { advect<OneLane<T>>(i, j, k); }
+
+#if !defined(__CUDACC__)
+  // Points (i .. i + 3, j, k) at once, as SSE lanes (CpuExec::parallel_for_3d).
+  void four_along_x(int i, int j, int k) const requires std::is_same_v<T, float> { advect<FourLanes>(i, j, k); }
+  bool lanes_fit() const {
+    return FourLanes::lanes_fit(source.size()) && FourLanes::lanes_fit(velocity.u.size()) &&
+           FourLanes::lanes_fit(velocity.v.size()) && FourLanes::lanes_fit(velocity.w.size());
+  }
+#endif
+
+  template <class L>
+  DP_HD_INLINE void advect(int i, int j, int k) const {
+    L::store(out + source.index(i, j, k), source.template sample<L>(trace_back<Points, L>(velocity, i, j, k, cells_per_speed)));
   }
 };
 

@@ -12,6 +12,7 @@
 // from the point, and that alone broke a symmetric flow's symmetry by 1e-5
 // within 60 steps.
 #include "air/mac_grid.h"
+#include "air/sample_lanes.h"
 #include "backend/host_device.h"
 #include "math/vec3.h"
 
@@ -29,27 +30,44 @@ DP_HD inline GridPoint grid_point_of(const MacGrid& g, Vec3 p) {
   return GridPoint{static_cast<int>(fi), static_cast<int>(fj), static_cast<int>(fk), Vec3{x.x - fi, x.y - fj, x.z - fk}};
 }
 
+// GridPoint for L's points (sample_lanes.h), the offset by component.
+template <class L>
+struct GridPointOf {
+  typename L::Int i, j, k;
+  typename L::Real x, y, z;
+};
+
+template <class L>
+DP_HD_INLINE GridPointOf<L> lanes_of(const GridPoint& p) {
+  return GridPointOf<L>{p.i, p.j, p.k, p.offset.x, p.offset.y, p.offset.z};
+}
+
 // Lattice index `base` + `offset` as the lower corner i and the weight t of
 // i + 1, clamped to [0, n - 1]; `step` is 1, or 0 where the upper corner
 // would fall off a lattice of one point.
-struct Corner {
-  int i;
-  float t;
+template <class L>
+struct CornerOf {
+  using Int = typename L::Int;
+  using Real = typename L::Real;
+  Int i;
+  Real t;
   int step;
-  static DP_HD_INLINE Corner locate(int base, float offset, int n) {
-    const float whole = floorf(offset);
-    Corner c{base + static_cast<int>(whole), offset - whole, 1};
-    if (c.i < 0) {
-      c.i = 0;
-      c.t = 0.0f;
-    } else if (c.i >= n - 1) {
-      c.i = n > 1 ? n - 2 : 0;
-      c.t = n > 1 ? 1.0f : 0.0f;
-    }
-    if (n < 2) c.step = 0;
-    return c;
+  static DP_HD_INLINE CornerOf locate(Int base, Real offset, int n) {
+    // floor(offset) by truncation, a select instead of floorf: the same
+    // value for every offset that converts to int, and it works on lanes.
+    const Int truncated = L::truncate(offset);
+    const Int whole = L::to_real(truncated) > offset ? truncated - 1 : truncated;
+    const Int i = base + whole;
+    const Real t = offset - L::to_real(whole);
+    const Int last = L::ints(n > 1 ? n - 2 : 0);
+    const Real t_last = L::reals(n > 1 ? 1.0f : 0.0f);
+    const Int first = L::ints(0);
+    const Real t_first = L::reals(0.0f);
+    return CornerOf{i < first ? first : (i >= L::ints(n - 1) ? last : i),
+                    i < first ? t_first : (i >= L::ints(n - 1) ? t_last : t), n > 1 ? 1 : 0};
   }
 };
+using Corner = CornerOf<OneLane<float>>;
 
 // Values at grid points (i, j, k) + `shift` (cells: 0.5 on a cell-centred
 // axis, 0 on a face axis), nx x ny x nz of them.
@@ -64,62 +82,80 @@ struct Lattice {
   DP_HD T at(int i, int j, int k) const { return value[index(i, j, k)]; }
   // Where p falls along one axis of this lattice: the lower corner and the
   // weight of the upper one, clamped to the lattice.
-  DP_HD Corner corner(int axis, const GridPoint& p) const {
-    return axis == 0 ? Corner::locate(p.i, p.offset.x - shift.x, nx)
-                     : (axis == 1 ? Corner::locate(p.j, p.offset.y - shift.y, ny) : Corner::locate(p.k, p.offset.z - shift.z, nz));
+  template <class L = OneLane<T>>
+  DP_HD_INLINE CornerOf<L> corner(int axis, const GridPointOf<L>& p) const {
+    return axis == 0 ? CornerOf<L>::locate(p.i, p.x - shift.x, nx)
+                     : (axis == 1 ? CornerOf<L>::locate(p.j, p.y - shift.y, ny) : CornerOf<L>::locate(p.k, p.z - shift.z, nz));
   }
 
   // The value at p, and the smallest and largest of the eight values it
   // was interpolated from (MacCormack's clamp, Selle et al. 2008).
   DP_HD_INLINE T sample(const GridPoint& p, T* lo = nullptr, T* hi = nullptr) const {
-    return sample(corner(0, p), corner(1, p), corner(2, p), lo, hi);
+    return sample<OneLane<T>>(lanes_of<OneLane<T>>(p), lo, hi);
+  }
+  template <class L>
+  DP_HD_INLINE typename L::Value sample(const GridPointOf<L>& p, typename L::Value* lo = nullptr,
+                                        typename L::Value* hi = nullptr) const {
+    return sample<L>(corner<L>(0, p), corner<L>(1, p), corner<L>(2, p), lo, hi);
   }
   // The same from corners already located (FaceVelocity shares them between
   // components): the eight values are reached by offsets from one index.
-  DP_HD_INLINE T sample(Corner x, Corner y, Corner z, T* lo = nullptr, T* hi = nullptr) const {
-    const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
-    const std::size_t c = index(x.i, y.i, z.i);
-    const std::size_t di = x.step, dj = y.step * row, dk = z.step * slab;
-    const T c000 = value[c], c100 = value[c + di], c010 = value[c + dj], c110 = value[c + dj + di];
-    const T c001 = value[c + dk], c101 = value[c + dk + di], c011 = value[c + dk + dj], c111 = value[c + dk + dj + di];
+  template <class L>
+  DP_HD_INLINE typename L::Value sample(const CornerOf<L>& x, const CornerOf<L>& y, const CornerOf<L>& z,
+                                        typename L::Value* lo = nullptr, typename L::Value* hi = nullptr) const {
+    using V = typename L::Value;
+    const std::ptrdiff_t row = nx, slab = row * ny;
+    const typename L::Index c = (L::to_index(z.i) * ny + L::to_index(y.i)) * nx + L::to_index(x.i);
+    const typename L::Index di = L::offset(x.step), dj = L::offset(y.step * row), dk = L::offset(z.step * slab);
+    const V c000 = L::load(value, c), c100 = L::load(value, c + di), c010 = L::load(value, c + dj),
+            c110 = L::load(value, c + dj + di);
+    const V c001 = L::load(value, c + dk), c101 = L::load(value, c + dk + di), c011 = L::load(value, c + dk + dj),
+            c111 = L::load(value, c + dk + dj + di);
     if (lo && hi) {
       *lo = min8(c000, c100, c010, c110, c001, c101, c011, c111);
       *hi = -min8(-c000, -c100, -c010, -c110, -c001, -c101, -c011, -c111);
     }
-    const T x00 = lerp(c000, c100, x.t), x10 = lerp(c010, c110, x.t), x01 = lerp(c001, c101, x.t), x11 = lerp(c011, c111, x.t);
-    return lerp(lerp(x00, x10, y.t), lerp(x01, x11, y.t), z.t);
+    const V x00 = lerp<L>(c000, c100, x.t), x10 = lerp<L>(c010, c110, x.t), x01 = lerp<L>(c001, c101, x.t),
+            x11 = lerp<L>(c011, c111, x.t);
+    return lerp<L>(lerp<L>(x00, x10, y.t), lerp<L>(x01, x11, y.t), z.t);
   }
 
-  // The same at a point whose lower corner (i, j, k) and weights are known
-  // at compile time, its upper corners inside the lattice: Wx, Wy, Wz are 1
-  // for weight 1/2 and 0 for weight 0, where a lerp would give its first
-  // value (a + 0 (b - a) = a for finite values) and the upper layer is not
-  // read. The terms and their order are those of the general sample.
-  template <int Wx, int Wy, int Wz>
-  DP_HD T sample_fixed(int i, int j, int k) const {
-    const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
-    const std::size_t c = index(i, j, k);
-    const T y0 = along_y<Wx, Wy>(c, row);
+  // The same at L's points whose lower corners (i, j, k), (i + 1, j, k), ...
+  // and weights are known at compile time, their upper corners inside the
+  // lattice: Wx, Wy, Wz are 1 for weight 1/2 and 0 for weight 0, where a
+  // lerp would give its first value (a + 0 (b - a) = a for finite values)
+  // and the upper layer is not read. The terms and their order are those of
+  // the general sample.
+  template <int Wx, int Wy, int Wz, class L = OneLane<T>>
+  DP_HD_INLINE typename L::Value sample_fixed(int i, int j, int k) const {
+    const std::ptrdiff_t row = nx, slab = row * ny;
+    const typename L::Index c = L::consecutive_index(index(i, j, k));
+    const auto y0 = along_y<Wx, Wy, L>(c, row);
     if constexpr (Wz == 0) return y0;
-    else return lerp(y0, along_y<Wx, Wy>(c + slab, row), 0.5f);
+    else return lerp<L>(y0, along_y<Wx, Wy, L>(c + L::offset(slab), row), L::reals(0.5f));
   }
 
  private:
-  template <int Wx>
-  DP_HD T along_x(std::size_t c) const {
-    if constexpr (Wx == 0) return value[c];
-    else return lerp(value[c], value[c + 1], 0.5f);
+  template <int Wx, class L>
+  DP_HD_INLINE typename L::Value along_x(typename L::Index c) const {
+    if constexpr (Wx == 0) return L::load(value, c);
+    else return lerp<L>(L::load(value, c), L::load(value, c + L::offset(1)), L::reals(0.5f));
   }
-  template <int Wx, int Wy>
-  DP_HD T along_y(std::size_t c, std::size_t row) const {
-    if constexpr (Wy == 0) return along_x<Wx>(c);
-    else return lerp(along_x<Wx>(c), along_x<Wx>(c + row), 0.5f);
+  template <int Wx, int Wy, class L>
+  DP_HD_INLINE typename L::Value along_y(typename L::Index c, std::ptrdiff_t row) const {
+    if constexpr (Wy == 0) return along_x<Wx, L>(c);
+    else return lerp<L>(along_x<Wx, L>(c), along_x<Wx, L>(c + L::offset(row)), L::reals(0.5f));
   }
-  DP_HD static T min2(T a, T b) { return b < a ? b : a; }
-  DP_HD static T min8(T a, T b, T c, T d, T e, T f, T g, T h) {
+  template <class V>
+  DP_HD_INLINE static V min2(V a, V b) { return b < a ? b : a; }
+  template <class V>
+  DP_HD_INLINE static V min8(V a, V b, V c, V d, V e, V f, V g, V h) {
     return min2(min2(min2(a, b), min2(c, d)), min2(min2(e, f), min2(g, h)));
   }
-  DP_HD static T lerp(T a, T b, float t) { return a + static_cast<T>(t) * (b - a); }
+  template <class L>
+  DP_HD_INLINE static typename L::Value lerp(typename L::Value a, typename L::Value b, typename L::Real t) {
+    return a + L::weight(t) * (b - a);
+  }
 };
 
 template <class T>
@@ -143,26 +179,39 @@ DP_HD constexpr Vec3 mac_shift() {
   return Vec3{Points == 0 ? 0.0f : 0.5f, Points == 1 ? 0.0f : 0.5f, Points == 2 ? 0.0f : 0.5f};
 }
 
+// A velocity at L's points (sample_lanes.h), by component (m/s).
+template <class L>
+struct VelocityOf {
+  typename L::Real x, y, z;
+};
+
 // The three staggered components, sampled together (m/s).
 struct FaceVelocity {
   Lattice<float> u, v, w;
+  DP_HD_INLINE Vec3 at(const GridPoint& p) const {
+    const VelocityOf<OneLane<float>> s = at<OneLane<float>>(lanes_of<OneLane<float>>(p));
+    return Vec3{s.x, s.y, s.z};
+  }
   // Each axis has two shifts (0 on the faces of that axis, 0.5 for the other
   // two components) and the lattice sizes pair up likewise, so six located
   // corners serve the three components instead of nine. The shifts are the
   // MAC grid's constants (face_lattice), not read from u, v, w, so that
   // they fold where p's offset is a constant too.
-  DP_HD_INLINE Vec3 at(const GridPoint& p) const {
-    const Corner x0 = Corner::locate(p.i, p.offset.x - 0.0f, u.nx), x5 = Corner::locate(p.i, p.offset.x - 0.5f, v.nx);
-    const Corner y0 = Corner::locate(p.j, p.offset.y - 0.0f, v.ny), y5 = Corner::locate(p.j, p.offset.y - 0.5f, u.ny);
-    const Corner z0 = Corner::locate(p.k, p.offset.z - 0.0f, w.nz), z5 = Corner::locate(p.k, p.offset.z - 0.5f, u.nz);
-    return Vec3{u.sample(x0, y5, z5), v.sample(x5, y0, z5), w.sample(x5, y5, z0)};
+  template <class L>
+  DP_HD_INLINE VelocityOf<L> at(const GridPointOf<L>& p) const {
+    using C = CornerOf<L>;
+    const C x0 = C::locate(p.i, p.x - 0.0f, u.nx), x5 = C::locate(p.i, p.x - 0.5f, v.nx);
+    const C y0 = C::locate(p.j, p.y - 0.0f, v.ny), y5 = C::locate(p.j, p.y - 0.5f, u.ny);
+    const C z0 = C::locate(p.k, p.z - 0.0f, w.nz), z5 = C::locate(p.k, p.z - 0.5f, u.nz);
+    return VelocityOf<L>{u.sample<L>(x0, y5, z5), v.sample<L>(x5, y0, z5), w.sample<L>(x5, y5, z0)};
   }
 };
 
-// The velocity at point (i, j, k) of lattice `Points`, as FaceVelocity::at
-// gives it. Component C's corners along each axis lie half a cell below the
-// point (weight 1/2), at it (weight 0), or half a cell above (weight 1/2):
-// constants, so where every corner lies inside, sample_fixed serves.
+// The velocity at point (i, j, k) of lattice `Points` (for L, at points i,
+// i + 1, ... of the row), as FaceVelocity::at gives it. Component C's
+// corners along each axis lie half a cell below the point (weight 1/2), at
+// it (weight 0), or half a cell above (weight 1/2): constants, so where
+// every corner lies inside, sample_fixed serves.
 template <int Points>
 struct LatticePointVelocity {
   // Half cells from component C's lattice to the points along an axis: -1, 0 or 1.
@@ -180,16 +229,26 @@ struct LatticePointVelocity {
     const int a = i + lower<C, 0>(), b = j + lower<C, 1>(), c = k + lower<C, 2>();
     return a >= 0 && b >= 0 && c >= 0 && a + 1 < l.nx && b + 1 < l.ny && c + 1 < l.nz;
   }
+  // Points i .. last of a row: inside() holds for all where it holds at both ends.
   template <int C>
-  DP_HD static float component(const Lattice<float>& l, int i, int j, int k) {
-    return l.template sample_fixed<weight<C, 0>(), weight<C, 1>(), weight<C, 2>()>(i + lower<C, 0>(), j + lower<C, 1>(),
-                                                                                    k + lower<C, 2>());
+  DP_HD static bool inside(const Lattice<float>& l, int i, int last, int j, int k) {
+    return inside<C>(l, i, j, k) && inside<C>(l, last, j, k);
+  }
+  template <int C, class L>
+  DP_HD_INLINE static typename L::Value component(const Lattice<float>& l, int i, int j, int k) {
+    return l.template sample_fixed<weight<C, 0>(), weight<C, 1>(), weight<C, 2>(), L>(i + lower<C, 0>(), j + lower<C, 1>(),
+                                                                                       k + lower<C, 2>());
   }
 
-  static DP_HD_INLINE Vec3 at(const FaceVelocity& velocity, int i, int j, int k) {
-    if (inside<0>(velocity.u, i, j, k) && inside<1>(velocity.v, i, j, k) && inside<2>(velocity.w, i, j, k))
-      return Vec3{component<0>(velocity.u, i, j, k), component<1>(velocity.v, i, j, k), component<2>(velocity.w, i, j, k)};
-    return velocity.at(GridPoint{i, j, k, mac_shift<Points>()});
+  template <class L = OneLane<float>>
+  static DP_HD_INLINE VelocityOf<L> at(const FaceVelocity& velocity, int i, int j, int k) {
+    const int last = i + L::kCount - 1;
+    if (inside<0>(velocity.u, i, last, j, k) && inside<1>(velocity.v, i, last, j, k) && inside<2>(velocity.w, i, last, j, k))
+      return VelocityOf<L>{component<0, L>(velocity.u, i, j, k), component<1, L>(velocity.v, i, j, k),
+                           component<2, L>(velocity.w, i, j, k)};
+    constexpr Vec3 shift = mac_shift<Points>();
+    return velocity.at<L>(GridPointOf<L>{L::consecutive(i), L::ints(j), L::ints(k), L::reals(shift.x), L::reals(shift.y),
+                                         L::reals(shift.z)});
   }
 };
 

@@ -9,6 +9,7 @@
 #include <thrust/system/omp/execution_policy.h>
 
 #include <algorithm>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -16,6 +17,12 @@
 #include "backend/blocked_sum.h"
 
 namespace dp {
+
+template <class F>
+concept TakesFourAlongX = requires(const F& f) {
+  f.four_along_x(0, 0, 0);
+  { f.lanes_fit() } -> std::convertible_to<bool>;
+};
 
 class CpuExec {
  public:
@@ -72,13 +79,21 @@ class CpuExec {
   // Calls f(i, j, k) for every point of an nx x ny x nz box: threads take
   // whole x rows, so a functor is handed its coordinates without dividing a
   // linear index and its inner loop runs along contiguous memory.
+  // A functor with four_along_x(i, j, k) (and lanes_fit() true) is handed
+  // four points of a row at a time (sample_lanes.h), the rest one by one.
   template <class F>
   void parallel_for_3d(int nx, int ny, int nz, const F& f) const {
     const std::int64_t rows = static_cast<std::int64_t>(ny) * nz;
+    bool four = false;
+    if constexpr (TakesFourAlongX<F>) four = f.lanes_fit();
 #pragma omp parallel for schedule(static) num_threads(threads_) if (uses_threads(static_cast<std::size_t>(rows) * nx))
     for (std::int64_t r = 0; r < rows; ++r) {
       const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
-      for (int i = 0; i < nx; ++i) f(i, j, k);
+      int i = 0;
+      if constexpr (TakesFourAlongX<F>)
+        if (four)
+          for (; i + 4 <= nx; i += 4) f.four_along_x(i, j, k);
+      for (; i < nx; ++i) f(i, j, k);
     }
   }
 

@@ -49,6 +49,49 @@ void expect_linear_field_translated(AirAdvection scheme) {
 TEST(air_Advection, SemiLagrangianCarriesLinearFieldExactly) { expect_linear_field_translated(AirAdvection::SemiLagrangian); }
 TEST(air_Advection, MacCormackCarriesLinearFieldExactly) { expect_linear_field_translated(AirAdvection::MacCormack); }
 
+// The CPU's four-lane back-trace (sample_lanes.h) against the one-point
+// trace on the same fields, bit for bit, on every lattice of a MAC grid whose
+// rows are no multiple of four: a random flow fast enough (up to 6 cells per
+// step) that traces leave the grid and are clamped, and velocities of 0
+// and -0 at some faces.
+template <int Points>
+void expect_four_lanes_equal_one(const FaceVelocity& vel, const Lattice<float>& source, float c) {
+  std::vector<float> one(source.size()), four(source.size());
+  AdvectSemiLagrangian<float, Points> by_one{source, vel, c, one.data()};
+  AdvectSemiLagrangian<float, Points> by_four{source, vel, c, four.data()};
+  ASSERT_TRUE(by_four.lanes_fit());
+  for (int k = 0; k < source.nz; ++k)
+    for (int j = 0; j < source.ny; ++j) {
+      int i = 0;
+      for (; i + 4 <= source.nx; i += 4) by_four.four_along_x(i, j, k);
+      for (; i < source.nx; ++i) by_four(i, j, k);
+      for (i = 0; i < source.nx; ++i) by_one(i, j, k);
+    }
+  for (std::size_t n = 0; n < one.size(); ++n)
+    ASSERT_EQ(std::memcmp(&one[n], &four[n], sizeof(float)), 0) << "lattice " << Points << ", point " << n << ": " << one[n]
+                                                                   << " vs " << four[n];
+}
+
+TEST(air_Advection, FourLanesEqualOneLaneBitForBit) {
+  MacGrid g;
+  g.dx = 0.1f;
+  g.nx = 15;  // the u lattice's rows (16) end in a whole group of four, the cells' (15) do not
+  g.ny = 10;
+  g.nz = 7;
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<float> speed(-6.0f, 6.0f), value(-1.0f, 1.0f);
+  std::vector<float> u(g.face_count(0)), v(g.face_count(1)), w(g.face_count(2)), t(g.cell_count());
+  for (auto* f : {&u, &v, &w})
+    for (std::size_t n = 0; n < f->size(); ++n) (*f)[n] = n % 11 == 0 ? 0.0f : (n % 13 == 0 ? -0.0f : speed(rng));
+  for (float& x : t) x = value(rng);
+  const FaceVelocity vel = face_velocity(g, u.data(), v.data(), w.data());
+  const float c = 0.1f / g.dx;  // dt / dx: up to 6 cells per step
+  expect_four_lanes_equal_one<kCellCentres>(vel, cell_lattice(g, t.data()), c);
+  expect_four_lanes_equal_one<0>(vel, vel.u, c);
+  expect_four_lanes_equal_one<1>(vel, vel.v, c);
+  expect_four_lanes_equal_one<2>(vel, vel.w, c);
+}
+
 // CG needs a symmetric positive definite preconditioner: y.M x = x.M y and
 // x.M x > 0 for random x, y, on a grid with obstacles and an open face.
 TEST(air_Multigrid, VCycleIsSymmetricPositiveDefinite) {

@@ -1,0 +1,71 @@
+#pragma once
+// How many grid points the sampling code (staggered_sampling.h) works on at
+// once. It is written once over a lanes policy: OneLane, for every caller
+// and for all GPU work, or FourLanes, four consecutive points of an x row
+// as SSE vectors, which the CPU launcher uses for semi-Lagrangian advection.
+// A back-trace there is some 400 scalar instructions around data-dependent
+// gathers, which g++ does not vectorise by itself on baseline x86-64, and it
+// was 40 % of the CPU air step (docs/benchmarks.md). Both policies run the
+// same floating-point operations in the same order on each point, so the
+// results are the same bit for bit (tested).
+#include <cstddef>
+
+#include "backend/host_device.h"
+
+namespace dp {
+
+// One point. T is the type of the sampled values (float or double);
+// coordinates and weights are float.
+template <class T>
+struct OneLane {
+  using Value = T;
+  using Real = float;
+  using Int = int;
+  using Index = std::ptrdiff_t;  // a point's position in a lattice
+  static constexpr int kCount = 1;
+
+  DP_HD_INLINE static Real reals(float v) { return v; }
+  DP_HD_INLINE static Int ints(int v) { return v; }
+  DP_HD_INLINE static Int truncate(Real v) { return static_cast<int>(v); }
+  DP_HD_INLINE static Real to_real(Int v) { return static_cast<float>(v); }
+  DP_HD_INLINE static Index to_index(Int v) { return v; }
+  // Points first, first + 1, ... (one here).
+  DP_HD_INLINE static Int consecutive(int first) { return first; }
+  DP_HD_INLINE static Index consecutive_index(std::size_t first) { return static_cast<Index>(first); }
+  DP_HD_INLINE static Index offset(std::ptrdiff_t d) { return d; }  // the same for every point
+  DP_HD_INLINE static Value weight(Real t) { return static_cast<T>(t); }
+  DP_HD_INLINE static Value load(const T* p, Index i) { return p[i]; }
+  DP_HD_INLINE static void store(T* p, Value v) { *p = v; }
+};
+
+#if !defined(__CUDACC__)
+// Four points, as GCC/Clang vector extensions. Lattice positions are 32-bit
+// lanes: the CPU launcher takes this path only for lattices of fewer than
+// 2^31 points (lanes_fit).
+struct FourLanes {
+  typedef float Real __attribute__((vector_size(16)));
+  typedef int Int __attribute__((vector_size(16)));
+  using Value = Real;
+  using Index = Int;
+  static constexpr int kCount = 4;
+
+  static Real reals(float v) { return Real{v, v, v, v}; }
+  static Int ints(int v) { return Int{v, v, v, v}; }
+  static Int truncate(Real v) { return __builtin_convertvector(v, Int); }
+  static Real to_real(Int v) { return __builtin_convertvector(v, Real); }
+  static Index to_index(Int v) { return v; }
+  static Int consecutive(int first) { return Int{first, first + 1, first + 2, first + 3}; }
+  static Index consecutive_index(std::size_t first) { return consecutive(static_cast<int>(first)); }
+  static Index offset(std::ptrdiff_t d) { return ints(static_cast<int>(d)); }
+  static Value weight(Real t) { return t; }
+  static Value load(const float* p, Index i) { return Value{p[i[0]], p[i[1]], p[i[2]], p[i[3]]}; }
+  static void store(float* p, Value v) {
+    for (int l = 0; l < kCount; ++l) p[l] = v[l];
+  }
+
+  static constexpr std::size_t kMaxPoints = std::size_t{1} << 31;
+  static bool lanes_fit(std::size_t points) { return points < kMaxPoints; }
+};
+#endif
+
+}  // namespace dp
