@@ -149,31 +149,25 @@ struct RestrictionAxis {
   }
 };
 
-// The shapes a transfer between a fine level and the next coarser one
-// passes through: one axis at a time is coarsened (restriction) or refined
-// (prolongation). Box (X, Y, Z) is stored x fastest.
-struct TransferBoxes {
-  PoissonLevel fine, coarse;
-  // Coarse along x only, then along x and y (restriction's order); fine
-  // along x only, then along x and y (prolongation's).
-  DP_HD std::size_t coarse_x(int I, int j, int k) const { return (static_cast<std::size_t>(k) * fine.ny + j) * coarse.nx + I; }
-  DP_HD std::size_t coarse_xy(int I, int J, int k) const { return (static_cast<std::size_t>(k) * coarse.ny + J) * coarse.nx + I; }
-  DP_HD std::size_t fine_x(int i, int J, int K) const { return (static_cast<std::size_t>(K) * coarse.ny + J) * fine.nx + i; }
-  DP_HD std::size_t fine_xy(int i, int j, int K) const { return (static_cast<std::size_t>(K) * fine.ny + j) * fine.nx + i; }
-  // Values each intermediate box holds: the larger of the two shapes that
-  // share a buffer.
-  std::size_t wide_size() const {
-    const std::size_t r = static_cast<std::size_t>(coarse.nx) * fine.ny * fine.nz;
-    const std::size_t p = static_cast<std::size_t>(fine.nx) * fine.ny * coarse.nz;
-    return r > p ? r : p;
+// nx x ny x nz values, x fastest: a level, or one of the boxes a transfer
+// between levels passes through, coarsened or refined one axis at a time.
+struct Box {
+  int n[3];
+  DP_HD std::size_t index(int i, int j, int k) const { return (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i; }
+  DP_HD std::size_t size() const { return static_cast<std::size_t>(n[0]) * n[1] * n[2]; }
+  // This box with `count` values along `axis`.
+  DP_HD Box with(int axis, int count) const {
+    Box b = *this;
+    b.n[axis] = count;
+    return b;
   }
-  std::size_t narrow_size() const {
-    const std::size_t r = static_cast<std::size_t>(coarse.nx) * coarse.ny * fine.nz;
-    const std::size_t p = static_cast<std::size_t>(fine.nx) * coarse.ny * coarse.nz;
-    return r > p ? r : p;
-  }
-  DP_HD bool open(int axis, int side) const { return coarse.faces.open(axis, side); }
 };
+
+// Index in `box` of point (i, j, k) with its coordinate along Axis replaced.
+template <int Axis>
+DP_HD_INLINE std::size_t index_along(const Box& box, int i, int j, int k, int along) {
+  return box.index(Axis == 0 ? along : i, Axis == 1 ? along : j, Axis == 2 ? along : k);
+}
 
 // b_coarse = P^T r / 2: the transpose of the prolongation, scaled so that the
 // re-discretised coarse operator (cell size 2 dx, unscaled form) sees the
@@ -182,39 +176,23 @@ struct TransferBoxes {
 // x, y and z, each summing four values as a tree. One pass of 64-term sums
 // per coarse cell took as long as five Jacobi sweeps: each sum a chain of
 // additions waiting on the one before, and no pass that vectorised.
-struct RestrictAlongX {
-  TransferBoxes box;
-  const float* r;  // fine
-  float* out;      // coarse_x
-  DP_HD void operator()(int I, int j, int k) const {
-    const RestrictionAxis x = RestrictionAxis::at(I, box.fine.nx, box.coarse.nx, box.open(0, 0), box.open(0, 1));
-    const float* row = r + box.fine.index(0, j, k);
-    out[box.coarse_x(I, j, k)] = x.sum(row[x.fine[0]], row[x.fine[1]], row[x.fine[2]], row[x.fine[3]]);
-  }
-};
-
-struct RestrictAlongY {
-  TransferBoxes box;
-  const float* in;  // coarse_x
-  float* out;       // coarse_xy
-  DP_HD void operator()(int I, int J, int k) const {
-    const RestrictionAxis y = RestrictionAxis::at(J, box.fine.ny, box.coarse.ny, box.open(1, 0), box.open(1, 1));
-    out[box.coarse_xy(I, J, k)] = y.sum(in[box.coarse_x(I, y.fine[0], k)], in[box.coarse_x(I, y.fine[1], k)],
-                                        in[box.coarse_x(I, y.fine[2], k)], in[box.coarse_x(I, y.fine[3], k)]);
-  }
-};
-
-// The last pass writes b on the coarse unknowns and 0 elsewhere.
-struct RestrictAlongZ {
-  TransferBoxes box;
-  const float* in;  // coarse_xy
-  float* b;         // coarse
-  DP_HD void operator()(int I, int J, int K) const {
-    const RestrictionAxis z = RestrictionAxis::at(K, box.fine.nz, box.coarse.nz, box.open(2, 0), box.open(2, 1));
-    const std::size_t c = box.coarse.index(I, J, K);
-    const float sum = z.sum(in[box.coarse_xy(I, J, z.fine[0])], in[box.coarse_xy(I, J, z.fine[1])],
-                            in[box.coarse_xy(I, J, z.fine[2])], in[box.coarse_xy(I, J, z.fine[3])]);
-    b[c] = keep_if(0.5f * sum, box.coarse.unknown[c] != 0);
+// `in` has the fine count along Axis, `out` the coarse one; the Last pass
+// writes b, halved, on the coarse unknowns and 0 elsewhere.
+template <int Axis, bool Last>
+struct RestrictAlong {
+  Box in, out;
+  DomainFaces faces;
+  const float* source;
+  float* target;
+  const std::uint8_t* coarse_unknown;  // Last only
+  DP_HD void operator()(int i, int j, int k) const {
+    const int at[3] = {i, j, k};
+    const RestrictionAxis a = RestrictionAxis::at(at[Axis], in.n[Axis], out.n[Axis], faces.open(Axis, 0), faces.open(Axis, 1));
+    const float sum = a.sum(source[index_along<Axis>(in, i, j, k, a.fine[0])], source[index_along<Axis>(in, i, j, k, a.fine[1])],
+                            source[index_along<Axis>(in, i, j, k, a.fine[2])], source[index_along<Axis>(in, i, j, k, a.fine[3])]);
+    const std::size_t c = out.index(i, j, k);
+    if constexpr (Last) target[c] = keep_if(0.5f * sum, coarse_unknown[c] != 0);
+    else target[c] = sum;
   }
 };
 
@@ -235,40 +213,38 @@ struct ProlongationAxis {
 };
 
 // x_fine += P e_coarse on the fine unknowns, P scaled by ProlongationScale:
-// like restriction, three separable passes, along x, y, then z.
-struct ProlongAlongX {
-  TransferBoxes box;
-  const float* e;  // coarse
-  float* out;      // fine_x
-  DP_HD void operator()(int i, int J, int K) const {
-    const ProlongationAxis x = ProlongationAxis::at(i, box.coarse.nx, box.open(0, 0), box.open(0, 1));
-    const float* row = e + box.coarse.index(0, J, K);
-    out[box.fine_x(i, J, K)] = x.lerp(row[x.near], row[x.far]);
-  }
-};
-
-struct ProlongAlongY {
-  TransferBoxes box;
-  const float* in;  // fine_x
-  float* out;       // fine_xy
-  DP_HD void operator()(int i, int j, int K) const {
-    const ProlongationAxis y = ProlongationAxis::at(j, box.coarse.ny, box.open(1, 0), box.open(1, 1));
-    out[box.fine_xy(i, j, K)] = y.lerp(in[box.fine_x(i, y.near, K)], in[box.fine_x(i, y.far, K)]);
-  }
-};
-
-// Adds +0 where the fine cell is no unknown (x holds +0 there).
-struct ProlongAlongZAndAdd {
-  TransferBoxes box;
-  const float* scale;
-  const float* in;  // fine_xy
-  float* x;         // fine
+// like restriction, three separable passes, along x, y, then z. `in` has
+// the coarse count along Axis, `out` the fine one; the Last pass adds to x,
+// +0 where the fine cell is no unknown (x holds +0 there).
+template <int Axis, bool Last>
+struct ProlongAlong {
+  Box in, out;
+  DomainFaces faces;
+  const float* source;
+  float* target;
+  const float* scale;                // Last only
+  const std::uint8_t* fine_unknown;  // Last only
   DP_HD void operator()(int i, int j, int k) const {
-    const ProlongationAxis z = ProlongationAxis::at(k, box.coarse.nz, box.open(2, 0), box.open(2, 1));
-    const std::size_t f = box.fine.index(i, j, k);
-    const float e = z.lerp(in[box.fine_xy(i, j, z.near)], in[box.fine_xy(i, j, z.far)]);
-    x[f] += keep_if(scale[f] * e, box.fine.unknown[f] != 0);
+    const int at[3] = {i, j, k};
+    const ProlongationAxis a = ProlongationAxis::at(at[Axis], in.n[Axis], faces.open(Axis, 0), faces.open(Axis, 1));
+    const float e = a.lerp(source[index_along<Axis>(in, i, j, k, a.near)], source[index_along<Axis>(in, i, j, k, a.far)]);
+    const std::size_t f = out.index(i, j, k);
+    if constexpr (Last) target[f] += keep_if(scale[f] * e, fine_unknown[f] != 0);
+    else target[f] = e;
   }
+};
+
+// The boxes of one transfer between a fine level and the next coarser one.
+struct TransferBoxes {
+  Box fine, coarse;
+  DP_HD Box coarse_x() const { return fine.with(0, coarse.n[0]); }    // restriction, after x
+  DP_HD Box coarse_xy() const { return coarse_x().with(1, coarse.n[1]); }
+  DP_HD Box fine_x() const { return coarse.with(0, fine.n[0]); }      // prolongation, after x
+  DP_HD Box fine_xy() const { return fine_x().with(1, fine.n[1]); }
+  // Two buffers serve both: after x (restriction) with after x and y
+  // (prolongation), and the other two.
+  std::size_t wide_size() const { return coarse_x().size() > fine_xy().size() ? coarse_x().size() : fine_xy().size(); }
+  std::size_t narrow_size() const { return coarse_xy().size() > fine_x().size() ? coarse_xy().size() : fine_x().size(); }
 };
 
 struct CopyBytes {
@@ -322,13 +298,13 @@ class MultigridPreconditioner {
       // Halve while every axis keeps at least four cells.
       if (nx < 8 || ny < 8 || nz < 8) break;
       levels_.back().prolongation_scale.resize(n);
-      const PoissonLevel fine_shape{nx, ny, nz, nullptr, faces, nullptr, nullptr};
+      const Box fine{{nx, ny, nz}};
       nx = (nx + 1) / 2;
       ny = (ny + 1) / 2;
       nz = (nz + 1) / 2;
-      const TransferBoxes box{fine_shape, PoissonLevel{nx, ny, nz, nullptr, faces, nullptr, nullptr}};
-      levels_.back().transfer_wide.resize(box.wide_size());
-      levels_.back().transfer_narrow.resize(box.narrow_size());
+      const TransferBoxes boxes{fine, Box{{nx, ny, nz}}};
+      levels_.back().transfer_wide.resize(boxes.wide_size());
+      levels_.back().transfer_narrow.resize(boxes.narrow_size());
     }
     faces_ = faces;
     built_ = false;
@@ -400,6 +376,12 @@ class MultigridPreconditioner {
     }
   }
 
+  // One pass of a transfer, a point per value it writes.
+  template <class Pass>
+  static void run_over_out(const Exec& exec, const Pass& pass) {
+    exec.parallel_for_3d(pass.out.n[0], pass.out.n[1], pass.out.n[2], pass);
+  }
+
   // Solves level l's A x = b approximately: smooth, correct from the
   // coarser level, smooth again; the coarsest level is only smoothed.
   void cycle(const Exec& exec, std::size_t l, const float* b, float* x) {
@@ -413,16 +395,16 @@ class MultigridPreconditioner {
     const float* scale = Exec::ptr(v.prolongation_scale);
     exec.parallel_for(v.tmp.size(), ScaledPoissonResidual{p, x, b, scale, v.tmp.ptr()});
     Level& c = levels_[l + 1];
-    const TransferBoxes box{p, view(l + 1)};
+    const TransferBoxes boxes{Box{{v.nx, v.ny, v.nz}}, Box{{c.nx, c.ny, c.nz}}};
     float* wide = Exec::ptr(v.transfer_wide);
     float* narrow = Exec::ptr(v.transfer_narrow);
-    exec.parallel_for_3d(c.nx, v.ny, v.nz, RestrictAlongX{box, v.tmp.ptr(), wide});
-    exec.parallel_for_3d(c.nx, c.ny, v.nz, RestrictAlongY{box, wide, narrow});
-    exec.parallel_for_3d(c.nx, c.ny, c.nz, RestrictAlongZ{box, narrow, Exec::ptr(c.b)});
+    run_over_out(exec, RestrictAlong<0, false>{boxes.fine, boxes.coarse_x(), faces_, v.tmp.ptr(), wide, nullptr});
+    run_over_out(exec, RestrictAlong<1, false>{boxes.coarse_x(), boxes.coarse_xy(), faces_, wide, narrow, nullptr});
+    run_over_out(exec, RestrictAlong<2, true>{boxes.coarse_xy(), boxes.coarse, faces_, narrow, Exec::ptr(c.b), Exec::ptr(c.unknown)});
     cycle(exec, l + 1, Exec::ptr(c.b), c.x.ptr());
-    exec.parallel_for_3d(v.nx, c.ny, c.nz, ProlongAlongX{box, c.x.ptr(), narrow});
-    exec.parallel_for_3d(v.nx, v.ny, c.nz, ProlongAlongY{box, narrow, wide});
-    exec.parallel_for_3d(v.nx, v.ny, v.nz, ProlongAlongZAndAdd{box, scale, wide, x});
+    run_over_out(exec, ProlongAlong<0, false>{boxes.coarse, boxes.fine_x(), faces_, c.x.ptr(), narrow, nullptr, nullptr});
+    run_over_out(exec, ProlongAlong<1, false>{boxes.fine_x(), boxes.fine_xy(), faces_, narrow, wide, nullptr, nullptr});
+    run_over_out(exec, ProlongAlong<2, true>{boxes.fine_xy(), boxes.fine, faces_, wide, x, scale, p.unknown});
     smooth(exec, l, b, x, false, kSmoothingSweeps);
   }
 
