@@ -228,10 +228,11 @@ class AirGrid {
 
   // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt.
   void add_forces(const Exec& exec, float dt) {
-    for (int a = 0; a < 3; ++a)
-      if (buoyancy_.up[a] != 0.0f)  // buoyancy acts along up only (often one axis)
-        exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), AddBuoyancy{grid_, a, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt,
-                                                  Exec::ptr(u_[a])});
+    for (int a = 0; a < 3; ++a) {
+      if (buoyancy_.up[a] == 0.0f) continue;  // no pass over faces the kernel leaves alone
+      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
+                           AddBuoyancy{grid_, a, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt, Exec::ptr(u_[a])});
+    }
     if (settings_.vorticity_epsilon > 0) {
       exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, CellCentredVelocity{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]),
                                                Exec::ptr(cell_velocity_)});
@@ -316,18 +317,6 @@ class AirGrid {
   PcgResult project(const Exec& exec) {
     enforce_boundaries(exec);
     return project_enforced(exec);
-  }
-
-  // project() where every prescribed face already holds its value.
-  PcgResult project_enforced(const Exec& exec) {
-    const std::size_t n = grid_.cell_count();
-    exec.parallel_for(n, MarkAirUnknowns{Exec::ptr(kind_), Exec::ptr(unknown_)});
-    pcg_.set_unknowns(exec, unknown_);
-    exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeProjectionRhs{cells(), Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), Exec::ptr(rhs_)});
-    const PcgResult result = pcg_.solve(exec, rhs_, phi_, settings_.projection_tolerance, settings_.projection_max_iterations);
-    for (int a = 0; a < 3; ++a)
-      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), SubtractPressureGradient{cells(), a, Exec::ptr(phi_), Exec::ptr(u_[a])});
-    return result;
   }
 
   // Coupling (paper Sec. 5-6): per-cell vapor mass (kg) and temperature
@@ -429,6 +418,18 @@ class AirGrid {
   }
 
  private:
+  // project() where every prescribed face already holds its value.
+  PcgResult project_enforced(const Exec& exec) {
+    const std::size_t n = grid_.cell_count();
+    exec.parallel_for(n, MarkAirUnknowns{Exec::ptr(kind_), Exec::ptr(unknown_)});
+    pcg_.set_unknowns(exec, unknown_);
+    exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeProjectionRhs{cells(), Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), Exec::ptr(rhs_)});
+    const PcgResult result = pcg_.solve(exec, rhs_, phi_, settings_.projection_tolerance, settings_.projection_max_iterations);
+    for (int a = 0; a < 3; ++a)
+      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), SubtractPressureGradient{cells(), a, Exec::ptr(phi_), Exec::ptr(u_[a])});
+    return result;
+  }
+
   // Semi-Lagrangian, or MacCormack on top of it, from `source` into `out`;
   // `Points` names source's lattice (mac_shift).
   template <int Points, class T>

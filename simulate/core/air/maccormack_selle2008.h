@@ -10,6 +10,7 @@ namespace dp {
 
 template <class T, int Points>
 struct MacCormackCorrect {
+  static_assert(std::is_same_v<T, float>, "the back-trace samples float velocity lattices with T's lanes");
   Lattice<T> source;  // phi at the start of the step
   FaceVelocity velocity;
   float cells_per_speed;  // dt / dx

@@ -127,9 +127,10 @@ struct ScaledPoissonResidual {
 };
 
 // The four fine cells 2C-1 .. 2C+2 that coarse cell C gathers from along one
-// axis of nf fine cells, with their prolongation weights (prolongation_weight)
-// as restriction's; a fine cell beyond the grid gets weight 0 and the index
-// of the nearest one, so that every read stays inside.
+// axis of nf fine cells, each with the weight the prolongation gives C in
+// it (prolongation_weight), which makes restriction its transpose; a fine
+// cell beyond the grid gets weight 0 and the index of the nearest one, so
+// that every read stays inside.
 struct RestrictionAxis {
   int fine[4];
   float weight[4];
@@ -241,8 +242,8 @@ struct TransferBoxes {
   DP_HD Box coarse_xy() const { return coarse_x().with(1, coarse.n[1]); }
   DP_HD Box fine_x() const { return coarse.with(0, fine.n[0]); }      // prolongation, after x
   DP_HD Box fine_xy() const { return fine_x().with(1, fine.n[1]); }
-  // Two buffers serve both: after x (restriction) with after x and y
-  // (prolongation), and the other two.
+  // Two buffers serve both transfers: "wide" holds coarse_x, then fine_xy;
+  // "narrow" coarse_xy, then fine_x.
   std::size_t wide_size() const { return coarse_x().size() > fine_xy().size() ? coarse_x().size() : fine_xy().size(); }
   std::size_t narrow_size() const { return coarse_xy().size() > fine_x().size() ? coarse_xy().size() : fine_x().size(); }
 };
@@ -378,7 +379,7 @@ class MultigridPreconditioner {
 
   // One pass of a transfer, a point per value it writes.
   template <class Pass>
-  static void run_over_out(const Exec& exec, const Pass& pass) {
+  static void run_pass(const Exec& exec, const Pass& pass) {
     exec.parallel_for_3d(pass.out.n[0], pass.out.n[1], pass.out.n[2], pass);
   }
 
@@ -398,13 +399,13 @@ class MultigridPreconditioner {
     const TransferBoxes boxes{Box{{v.nx, v.ny, v.nz}}, Box{{c.nx, c.ny, c.nz}}};
     float* wide = Exec::ptr(v.transfer_wide);
     float* narrow = Exec::ptr(v.transfer_narrow);
-    run_over_out(exec, RestrictAlong<0, false>{boxes.fine, boxes.coarse_x(), faces_, v.tmp.ptr(), wide, nullptr});
-    run_over_out(exec, RestrictAlong<1, false>{boxes.coarse_x(), boxes.coarse_xy(), faces_, wide, narrow, nullptr});
-    run_over_out(exec, RestrictAlong<2, true>{boxes.coarse_xy(), boxes.coarse, faces_, narrow, Exec::ptr(c.b), Exec::ptr(c.unknown)});
+    run_pass(exec, RestrictAlong<0, false>{boxes.fine, boxes.coarse_x(), faces_, v.tmp.ptr(), wide, nullptr});
+    run_pass(exec, RestrictAlong<1, false>{boxes.coarse_x(), boxes.coarse_xy(), faces_, wide, narrow, nullptr});
+    run_pass(exec, RestrictAlong<2, true>{boxes.coarse_xy(), boxes.coarse, faces_, narrow, Exec::ptr(c.b), Exec::ptr(c.unknown)});
     cycle(exec, l + 1, Exec::ptr(c.b), c.x.ptr());
-    run_over_out(exec, ProlongAlong<0, false>{boxes.coarse, boxes.fine_x(), faces_, c.x.ptr(), narrow, nullptr, nullptr});
-    run_over_out(exec, ProlongAlong<1, false>{boxes.fine_x(), boxes.fine_xy(), faces_, narrow, wide, nullptr, nullptr});
-    run_over_out(exec, ProlongAlong<2, true>{boxes.fine_xy(), boxes.fine, faces_, wide, x, scale, p.unknown});
+    run_pass(exec, ProlongAlong<0, false>{boxes.coarse, boxes.fine_x(), faces_, c.x.ptr(), narrow, nullptr, nullptr});
+    run_pass(exec, ProlongAlong<1, false>{boxes.fine_x(), boxes.fine_xy(), faces_, narrow, wide, nullptr, nullptr});
+    run_pass(exec, ProlongAlong<2, true>{boxes.fine_xy(), boxes.fine, faces_, wide, x, scale, p.unknown});
     smooth(exec, l, b, x, false, kSmoothingSweeps);
   }
 

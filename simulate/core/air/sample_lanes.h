@@ -2,12 +2,16 @@
 // How many grid points the sampling code (staggered_sampling.h) works on at
 // once. It is written once over a lanes policy: OneLane, for every caller
 // and for all GPU work, or FourLanes, four consecutive points of an x row
-// as SSE vectors, which the CPU launcher uses for semi-Lagrangian advection.
-// A back-trace there is some 400 scalar instructions around data-dependent
-// gathers, which g++ does not vectorise by itself on baseline x86-64, and it
-// was 40 % of the CPU air step (docs/benchmarks.md). Both policies run the
-// same floating-point operations in the same order on each point, so the
-// results are the same bit for bit (tested).
+// as SSE vectors, which the CPU launcher uses for the semi-Lagrangian pass
+// (MacCormack's correction pass stays one point at a time). A back-trace
+// is some 400 scalar instructions around data-dependent gathers, which g++
+// does not vectorise by itself on baseline x86-64, and it was 40 % of the
+// CPU air step (docs/benchmarks.md). Both policies run the same
+// floating-point operations in the same order on each point, so for
+// finite velocity fields the results are the same bit for bit (tested).
+// (With a non-finite velocity a group of four may take the general
+// sampling path where one point would take the fixed-weight one, and
+// 0 * inf differs from not multiplying; the step stops on such a field.)
 #include <cstddef>
 
 #include "backend/host_device.h"
@@ -38,8 +42,10 @@ struct OneLane {
   DP_HD_INLINE static void store(T* p, Value v) { *p = v; }
 };
 
-#if !defined(__CUDACC__)
-// Four points, as GCC/Clang vector extensions. Lattice positions are 32-bit
+#if !defined(__CUDA_ARCH__)
+// Four points, as GCC/Clang vector extensions (host code only; nvcc's host
+// pass takes them too, so the CPU backend's functors are the same in .cu
+// and .cpp files). Lattice positions are 32-bit
 // lanes: the CPU launcher takes this path only for lattices of fewer than
 // 2^31 points (lanes_fit).
 struct FourLanes {

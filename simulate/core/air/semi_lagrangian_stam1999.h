@@ -20,8 +20,8 @@ DP_HD_INLINE GridPointOf<L> trace_back(const FaceVelocity& velocity, int i, int 
   constexpr Vec3 shift = mac_shift<Points>();
   const float half = 0.5f * cells_per_speed;
   const VelocityOf<L> at_point = LatticePointVelocity<Points>::template at<L>(velocity, i, j, k);
-  const GridPointOf<L> mid{L::consecutive(i), L::ints(j),           L::ints(k),
-                           shift.x - half * at_point.x, shift.y - half * at_point.y, shift.z - half * at_point.z};
+  const GridPointOf<L> mid{L::consecutive(i), L::ints(j), L::ints(k), shift.x - half * at_point.x,
+                           shift.y - half * at_point.y, shift.z - half * at_point.z};
   const VelocityOf<L> at_mid = velocity.at<L>(mid);
   return GridPointOf<L>{mid.i, mid.j, mid.k, shift.x - cells_per_speed * at_mid.x, shift.y - cells_per_speed * at_mid.y,
                         shift.z - cells_per_speed * at_mid.z};
@@ -31,6 +31,7 @@ DP_HD_INLINE GridPointOf<L> trace_back(const FaceVelocity& velocity, int i, int 
 // the cell centres or the faces of one axis (`Points`, as in mac_shift).
 template <class T, int Points>
 struct AdvectSemiLagrangian {
+  static_assert(std::is_same_v<T, float>, "the back-trace samples float velocity lattices with T's lanes");
   Lattice<T> source;
   FaceVelocity velocity;
   float cells_per_speed;  // dt / dx
@@ -38,9 +39,9 @@ struct AdvectSemiLagrangian {
 
   DP_HD void operator()(int i, int j, int k) const { advect<OneLane<T>>(i, j, k); }
 
-#if !defined(__CUDACC__)
+#if !defined(__CUDA_ARCH__)
   // Points (i .. i + 3, j, k) at once, as SSE lanes (CpuExec::parallel_for_3d).
-  void four_along_x(int i, int j, int k) const requires std::is_same_v<T, float> { advect<FourLanes>(i, j, k); }
+  void four_along_x(int i, int j, int k) const { advect<FourLanes>(i, j, k); }
   bool lanes_fit() const {
     return FourLanes::lanes_fit(source.size()) && FourLanes::lanes_fit(velocity.u.size()) &&
            FourLanes::lanes_fit(velocity.v.size()) && FourLanes::lanes_fit(velocity.w.size());

@@ -37,9 +37,9 @@ struct GridPointOf {
   typename L::Real x, y, z;
 };
 
-template <class L>
-DP_HD_INLINE GridPointOf<L> lanes_of(const GridPoint& p) {
-  return GridPointOf<L>{p.i, p.j, p.k, p.offset.x, p.offset.y, p.offset.z};
+template <class T>
+DP_HD_INLINE GridPointOf<OneLane<T>> one_lane_of(const GridPoint& p) {
+  return GridPointOf<OneLane<T>>{p.i, p.j, p.k, p.offset.x, p.offset.y, p.offset.z};
 }
 
 // Lattice index `base` + `offset` as the lower corner i and the weight t of
@@ -53,21 +53,25 @@ struct CornerOf {
   Real t;
   int step;
   static DP_HD_INLINE CornerOf locate(Int base, Real offset, int n) {
-    // floor(offset) by truncation, a select instead of floorf: the same
-    // value for every offset that converts to int, and it works on lanes.
-    const Int truncated = L::truncate(offset);
-    const Int whole = L::to_real(truncated) > offset ? truncated - 1 : truncated;
+    // floor(offset) by truncation and a select, instead of floorf, which
+    // has no lanes. Offsets beyond 2^24 cells are held there first (they
+    // clamp to the lattice's end all the same), so that the truncation
+    // never overflows; for smaller ones the floor is floorf's (t is -0
+    // rather than +0 at an offset of -0, which no trace produces), and NaN
+    // lands on the lower end, as before.
+    const Real far = L::reals(16777216.0f);
+    const Real held = offset < -far ? -far : (offset > far ? far : offset);
+    const Int truncated = L::truncate(held);
+    const Int whole = L::to_real(truncated) > held ? truncated - 1 : truncated;
     const Int i = base + whole;
-    const Real t = offset - L::to_real(whole);
-    const Int last = L::ints(n > 1 ? n - 2 : 0);
-    const Real t_last = L::reals(n > 1 ? 1.0f : 0.0f);
-    const Int first = L::ints(0);
-    const Real t_first = L::reals(0.0f);
-    return CornerOf{i < first ? first : (i >= L::ints(n - 1) ? last : i),
-                    i < first ? t_first : (i >= L::ints(n - 1) ? t_last : t), n > 1 ? 1 : 0};
+    const Real t = held - L::to_real(whole);
+    const Int first = L::ints(0), last = L::ints(n > 1 ? n - 2 : 0);
+    const Real t_first = L::reals(0.0f), t_last = L::reals(n > 1 ? 1.0f : 0.0f);
+    const auto below = i < first;
+    const auto above = i >= L::ints(n - 1);
+    return CornerOf{below ? first : (above ? last : i), below ? t_first : (above ? t_last : t), n > 1 ? 1 : 0};
   }
 };
-using Corner = CornerOf<OneLane<float>>;
 
 // Values at grid points (i, j, k) + `shift` (cells: 0.5 on a cell-centred
 // axis, 0 on a face axis), nx x ny x nz of them.
@@ -91,7 +95,7 @@ struct Lattice {
   // The value at p, and the smallest and largest of the eight values it
   // was interpolated from (MacCormack's clamp, Selle et al. 2008).
   DP_HD_INLINE T sample(const GridPoint& p, T* lo = nullptr, T* hi = nullptr) const {
-    return sample<OneLane<T>>(lanes_of<OneLane<T>>(p), lo, hi);
+    return sample<OneLane<T>>(one_lane_of<T>(p), lo, hi);
   }
   template <class L>
   DP_HD_INLINE typename L::Value sample(const GridPointOf<L>& p, typename L::Value* lo = nullptr,
@@ -189,7 +193,7 @@ struct VelocityOf {
 struct FaceVelocity {
   Lattice<float> u, v, w;
   DP_HD_INLINE Vec3 at(const GridPoint& p) const {
-    const VelocityOf<OneLane<float>> s = at<OneLane<float>>(lanes_of<OneLane<float>>(p));
+    const VelocityOf<OneLane<float>> s = at<OneLane<float>>(one_lane_of<float>(p));
     return Vec3{s.x, s.y, s.z};
   }
   // Each axis has two shifts (0 on the faces of that axis, 0.5 for the other
@@ -231,7 +235,7 @@ struct LatticePointVelocity {
   }
   // Points i .. last of a row: inside() holds for all where it holds at both ends.
   template <int C>
-  DP_HD static bool inside(const Lattice<float>& l, int i, int last, int j, int k) {
+  DP_HD static bool inside_row(const Lattice<float>& l, int i, int last, int j, int k) {
     return inside<C>(l, i, j, k) && inside<C>(l, last, j, k);
   }
   template <int C, class L>
@@ -243,7 +247,8 @@ struct LatticePointVelocity {
   template <class L = OneLane<float>>
   static DP_HD_INLINE VelocityOf<L> at(const FaceVelocity& velocity, int i, int j, int k) {
     const int last = i + L::kCount - 1;
-    if (inside<0>(velocity.u, i, last, j, k) && inside<1>(velocity.v, i, last, j, k) && inside<2>(velocity.w, i, last, j, k))
+    if (inside_row<0>(velocity.u, i, last, j, k) && inside_row<1>(velocity.v, i, last, j, k) &&
+        inside_row<2>(velocity.w, i, last, j, k))
       return VelocityOf<L>{component<0, L>(velocity.u, i, j, k), component<1, L>(velocity.v, i, j, k),
                            component<2, L>(velocity.w, i, j, k)};
     constexpr Vec3 shift = mac_shift<Points>();

@@ -9,7 +9,8 @@
 #include <thrust/system/omp/execution_policy.h>
 
 #include <algorithm>
-#include <concepts>
+#include <type_traits>
+#include <utility>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -18,11 +19,15 @@
 
 namespace dp {
 
+// Whether functor F offers four_along_x(i, j, k) and lanes_fit()
+// (sample_lanes.h). A trait, not a concept: nvcc compiles this header as
+// C++17 where .cu tests run the CPU backend beside the GPU one.
+template <class F, class = void>
+struct TakesFourAlongX : std::false_type {};
 template <class F>
-concept TakesFourAlongX = requires(const F& f) {
-  f.four_along_x(0, 0, 0);
-  { f.lanes_fit() } -> std::convertible_to<bool>;
-};
+struct TakesFourAlongX<F, std::void_t<decltype(std::declval<const F&>().four_along_x(0, 0, 0)),
+                                      decltype(static_cast<bool>(std::declval<const F&>().lanes_fit()))>>
+    : std::true_type {};
 
 class CpuExec {
  public:
@@ -85,14 +90,16 @@ class CpuExec {
   void parallel_for_3d(int nx, int ny, int nz, const F& f) const {
     const std::int64_t rows = static_cast<std::int64_t>(ny) * nz;
     bool four = false;
-    if constexpr (TakesFourAlongX<F>) four = f.lanes_fit();
+    if constexpr (TakesFourAlongX<F>::value) four = f.lanes_fit();
 #pragma omp parallel for schedule(static) num_threads(threads_) if (uses_threads(static_cast<std::size_t>(rows) * nx))
     for (std::int64_t r = 0; r < rows; ++r) {
       const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
       int i = 0;
-      if constexpr (TakesFourAlongX<F>)
-        if (four)
+      if constexpr (TakesFourAlongX<F>::value) {
+        if (four) {
           for (; i + 4 <= nx; i += 4) f.four_along_x(i, j, k);
+        }
+      }
       for (; i < nx; ++i) f(i, j, k);
     }
   }

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 
 #include "air/vapor_pressure.h"
@@ -49,24 +50,63 @@ void expect_linear_field_translated(AirAdvection scheme) {
 TEST(air_Advection, SemiLagrangianCarriesLinearFieldExactly) { expect_linear_field_translated(AirAdvection::SemiLagrangian); }
 TEST(air_Advection, MacCormackCarriesLinearFieldExactly) { expect_linear_field_translated(AirAdvection::MacCormack); }
 
-// The CPU's four-lane back-trace (sample_lanes.h) against the one-point
-// trace on the same fields, bit for bit, on every lattice of a MAC grid whose
-// rows are no multiple of four: a random flow fast enough (up to 6 cells per
-// step) that traces leave the grid and are clamped, and velocities of 0
-// and -0 at some faces.
+// The corner search (clamped lower corner and weight) against its
+// definition with floor in double precision, one lane and four: offsets on
+// and next to cell boundaries, beyond both ends, and far beyond (where a
+// truncation to int would overflow), on lattices of 1, 2 and 5 points.
+TEST(air_Sampling, CornerSearchMatchesFloorAndClamp) {
+  const float offsets[] = {-3e9f, -1e6f, -2.5f, -1.0f, -0.5f, -1e-7f, 0.0f, 1e-7f, 0.49999997f, 0.5f, 1.0f,
+                           3.9999998f, 4.0f, 4.5f, 1e6f, 3e9f, std::numeric_limits<float>::infinity(),
+                           -std::numeric_limits<float>::infinity()};
+  int checked = 0;
+  for (const int n : {1, 2, 5})
+    for (const int base : {-3, 0, 1, 4})
+      for (const float offset : offsets) {
+        const double whole = std::floor(static_cast<double>(offset));
+        const double at = base + whole;
+        int i;
+        float t;
+        if (at < 0) {
+          i = 0;
+          t = 0.0f;
+        } else if (at >= n - 1) {
+          i = n > 1 ? n - 2 : 0;
+          t = n > 1 ? 1.0f : 0.0f;
+        } else {
+          i = static_cast<int>(at);
+          t = offset - static_cast<float>(whole);
+        }
+        const auto one = CornerOf<OneLane<float>>::locate(base, offset, n);
+        EXPECT_EQ(one.i, i) << "n " << n << ", base " << base << ", offset " << offset;
+        EXPECT_EQ(one.t, t) << "n " << n << ", base " << base << ", offset " << offset;
+        EXPECT_EQ(one.step, n > 1 ? 1 : 0);
+        const auto four = CornerOf<FourLanes>::locate(FourLanes::ints(base), FourLanes::reals(offset), n);
+        for (int l = 0; l < 4; ++l) {
+          EXPECT_EQ(four.i[l], i) << "lane " << l << ", n " << n << ", base " << base << ", offset " << offset;
+          EXPECT_EQ(four.t[l], t) << "lane " << l << ", n " << n << ", base " << base << ", offset " << offset;
+        }
+        ++checked;
+      }
+  EXPECT_EQ(checked, 3 * 4 * 18);
+}
+
+// The CPU's four-lane back-trace (sample_lanes.h), as CpuExec runs it,
+// against the one-point trace on the same fields, bit for bit, on every
+// lattice of a MAC grid: rows that end in a whole group of four and rows
+// with points left over, a random flow fast enough (up to 6 cells per step,
+// forwards and backwards as MacCormack traces) that traces leave the grid
+// and are clamped, and velocities of 0 and -0 at some faces.
 template <int Points>
 void expect_four_lanes_equal_one(const FaceVelocity& vel, const Lattice<float>& source, float c) {
+  static_assert(TakesFourAlongX<AdvectSemiLagrangian<float, Points>>::value, "the CPU launcher must find the lanes");
   std::vector<float> one(source.size()), four(source.size());
-  AdvectSemiLagrangian<float, Points> by_one{source, vel, c, one.data()};
-  AdvectSemiLagrangian<float, Points> by_four{source, vel, c, four.data()};
+  const AdvectSemiLagrangian<float, Points> by_one{source, vel, c, one.data()};
+  const AdvectSemiLagrangian<float, Points> by_four{source, vel, c, four.data()};
   ASSERT_TRUE(by_four.lanes_fit());
+  CpuExec(1).parallel_for_3d(source.nx, source.ny, source.nz, by_four);
   for (int k = 0; k < source.nz; ++k)
-    for (int j = 0; j < source.ny; ++j) {
-      int i = 0;
-      for (; i + 4 <= source.nx; i += 4) by_four.four_along_x(i, j, k);
-      for (; i < source.nx; ++i) by_four(i, j, k);
-      for (i = 0; i < source.nx; ++i) by_one(i, j, k);
-    }
+    for (int j = 0; j < source.ny; ++j)
+      for (int i = 0; i < source.nx; ++i) by_one(i, j, k);
   for (std::size_t n = 0; n < one.size(); ++n)
     ASSERT_EQ(std::memcmp(&one[n], &four[n], sizeof(float)), 0) << "lattice " << Points << ", point " << n << ": " << one[n]
                                                                    << " vs " << four[n];
@@ -85,11 +125,12 @@ TEST(air_Advection, FourLanesEqualOneLaneBitForBit) {
     for (std::size_t n = 0; n < f->size(); ++n) (*f)[n] = n % 11 == 0 ? 0.0f : (n % 13 == 0 ? -0.0f : speed(rng));
   for (float& x : t) x = value(rng);
   const FaceVelocity vel = face_velocity(g, u.data(), v.data(), w.data());
-  const float c = 0.1f / g.dx;  // dt / dx: up to 6 cells per step
-  expect_four_lanes_equal_one<kCellCentres>(vel, cell_lattice(g, t.data()), c);
-  expect_four_lanes_equal_one<0>(vel, vel.u, c);
-  expect_four_lanes_equal_one<1>(vel, vel.v, c);
-  expect_four_lanes_equal_one<2>(vel, vel.w, c);
+  for (const float c : {0.1f / g.dx, -0.1f / g.dx}) {  // dt / dx: up to 6 cells per step
+    expect_four_lanes_equal_one<kCellCentres>(vel, cell_lattice(g, t.data()), c);
+    expect_four_lanes_equal_one<0>(vel, vel.u, c);
+    expect_four_lanes_equal_one<1>(vel, vel.v, c);
+    expect_four_lanes_equal_one<2>(vel, vel.w, c);
+  }
 }
 
 // CG needs a symmetric positive definite preconditioner: y.M x = x.M y and
