@@ -50,6 +50,74 @@ void expect_linear_field_translated(AirAdvection scheme) {
 TEST(air_Advection, SemiLagrangianCarriesLinearFieldExactly) { expect_linear_field_translated(AirAdvection::SemiLagrangian); }
 TEST(air_Advection, MacCormackCarriesLinearFieldExactly) { expect_linear_field_translated(AirAdvection::MacCormack); }
 
+// Prolongation along one axis is linear interpolation between coarse cell
+// centres of the coarse error extended one cell past each end: mirrored
+// across a closed wall (Neumann), negated across an open face (phi = 0 on
+// the face). Checked on rows of even and odd length, every pair of ends.
+TEST(air_Multigrid, ProlongationExtendsTheErrorAcrossWallsAndOpenFaces) {
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<float> u(-1, 1);
+  for (const int nf : {8, 9, 12})
+    for (unsigned mask = 0; mask < 4; ++mask) {
+      const int nc = (nf + 1) / 2;
+      std::vector<float> e(nc), fine(nf);
+      for (float& v : e) v = u(rng);
+      DomainFaces faces;
+      faces.open_mask = mask;  // bit 0: x low, bit 1: x high
+      const ProlongAlong<0, false> pass{Box{{nc, 1, 1}}, Box{{nf, 1, 1}}, faces, e.data(), fine.data(), nullptr, nullptr};
+      for (int i = 0; i < nf; ++i) pass(i, 0, 0);
+      std::vector<double> extended(nc + 2);  // ghost, e_0 .. e_{nc-1}, ghost
+      for (int c = 0; c < nc; ++c) extended[c + 1] = e[c];
+      extended[0] = (mask & 1u) ? -e[0] : e[0];
+      extended[nc + 1] = (mask & 2u) ? -e[nc - 1] : e[nc - 1];
+      for (int i = 0; i < nf; ++i) {
+        // Fine centre i + 1/2 at (i + 1/2) / 2 coarse cells; extended[m]'s centre at m - 1/2.
+        const double x = (i + 0.5) / 2.0 + 0.5;
+        const int left = static_cast<int>(std::floor(x));
+        const double w = x - left;
+        const double expected = (1 - w) * extended[left] + w * extended[left + 1];
+        EXPECT_NEAR(fine[i], expected, 1e-6) << "nf " << nf << ", open mask " << mask << ", fine cell " << i;
+      }
+    }
+}
+
+// Restriction is the transpose of prolongation, halved: r . P e = 2 (R r) . e
+// for random r and e, through the three separable passes of each, on boxes
+// of odd and even sizes with open faces on both sides of different axes.
+TEST(air_Multigrid, RestrictionIsHalfTheTransposeOfProlongation) {
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<float> u(-1, 1);
+  const Box fine{{9, 8, 7}}, coarse{{5, 4, 4}};
+  const TransferBoxes boxes{fine, coarse};
+  for (const unsigned mask : {0u, 0x3u, 0x6u, 0x39u}) {
+    DomainFaces faces;
+    faces.open_mask = mask;
+    std::vector<float> r(fine.size()), e(coarse.size()), wide(boxes.wide_size()), narrow(boxes.narrow_size());
+    std::vector<float> restricted(coarse.size()), prolonged(fine.size());
+    for (float& v : r) v = u(rng);
+    for (float& v : e) v = u(rng);
+    auto run = [](const auto& pass) {
+      for (int k = 0; k < pass.out.n[2]; ++k)
+        for (int j = 0; j < pass.out.n[1]; ++j)
+          for (int i = 0; i < pass.out.n[0]; ++i) pass(i, j, k);
+    };
+    run(RestrictAlong<0, false>{fine, boxes.coarse_x(), faces, r.data(), wide.data(), nullptr});
+    run(RestrictAlong<1, false>{boxes.coarse_x(), boxes.coarse_xy(), faces, wide.data(), narrow.data(), nullptr});
+    run(RestrictAlong<2, false>{boxes.coarse_xy(), coarse, faces, narrow.data(), restricted.data(), nullptr});
+    run(ProlongAlong<0, false>{coarse, boxes.fine_x(), faces, e.data(), narrow.data(), nullptr, nullptr});
+    run(ProlongAlong<1, false>{boxes.fine_x(), boxes.fine_xy(), faces, narrow.data(), wide.data(), nullptr, nullptr});
+    run(ProlongAlong<2, false>{boxes.fine_xy(), fine, faces, wide.data(), prolonged.data(), nullptr, nullptr});
+    double r_pe = 0, rr_e = 0, scale = 0;
+    for (std::size_t n = 0; n < r.size(); ++n) {
+      r_pe += static_cast<double>(r[n]) * prolonged[n];
+      scale += std::fabs(static_cast<double>(r[n]) * prolonged[n]);
+    }
+    for (std::size_t n = 0; n < e.size(); ++n) rr_e += static_cast<double>(restricted[n]) * e[n];
+    EXPECT_NEAR(r_pe, rr_e, 1e-6 * scale) << "open mask " << mask;
+    EXPECT_GT(scale, 10.0);
+  }
+}
+
 // The corner search (clamped lower corner and weight) against its
 // definition with floor in double precision, one lane and four: offsets on
 // and next to cell boundaries, beyond both ends, and far beyond (where a
