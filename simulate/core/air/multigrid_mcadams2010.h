@@ -208,7 +208,7 @@ struct ProlongationAxis {
     coarse_pair(fine, pair);
     const bool far_inside = (pair[1] >= 0) & (pair[1] < nc);
     return ProlongationAxis{pair[0], far_inside ? pair[1] : pair[0], prolongation_weight(fine, pair[0], nc, open_low, open_high),
-                            far_inside ? 0.25f : 0.0f};
+                            far_inside ? prolongation_weight(fine, pair[1], nc, open_low, open_high) : 0.0f};
   }
   DP_HD_INLINE float lerp(float near_value, float far_value) const { return w_near * near_value + w_far * far_value; }
 };

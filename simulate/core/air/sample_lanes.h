@@ -43,11 +43,11 @@ struct OneLane {
 };
 
 #if !defined(__CUDA_ARCH__)
-// Four points, as GCC/Clang vector extensions (host code only; nvcc's host
-// pass takes them too, so the CPU backend's functors are the same in .cu
-// and .cpp files). Lattice positions are 32-bit
-// lanes: the CPU launcher takes this path only for lattices of fewer than
-// 2^31 points (lanes_fit).
+// Four points, as GCC/Clang vector extensions, in host code only (nvcc's
+// host pass takes them too, so the CPU backend's functors are the same in
+// .cu and .cpp files). Lattice positions are 32-bit lanes: the CPU
+// launcher takes this path only for lattices of fewer than 2^31 points
+// (lanes_fit).
 struct FourLanes {
   typedef float Real __attribute__((vector_size(16)));
   typedef int Int __attribute__((vector_size(16)));

@@ -9,10 +9,10 @@
 #include <thrust/system/omp/execution_policy.h>
 
 #include <algorithm>
-#include <type_traits>
-#include <utility>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "backend/blocked_sum.h"

@@ -81,9 +81,10 @@ TEST(air_Multigrid, ProlongationExtendsTheErrorAcrossWallsAndOpenFaces) {
     }
 }
 
-// Restriction is the transpose of prolongation, halved: r . P e = 2 (R r) . e
-// for random r and e, through the three separable passes of each, on boxes
-// of odd and even sizes with open faces on both sides of different axes.
+// Restriction is the transpose of prolongation, halved (R = P^T / 2, the
+// halving in its last pass): without that pass's halving the three passes
+// give P^T r, so r . P e = (P^T r) . e for random r and e, on boxes of odd
+// and even sizes with open faces on both sides of different axes.
 TEST(air_Multigrid, RestrictionIsHalfTheTransposeOfProlongation) {
   std::mt19937 rng(43);
   std::uniform_real_distribution<float> u(-1, 1);
