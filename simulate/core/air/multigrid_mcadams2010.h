@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "air/poisson_level.h"
+#include "air/sample_lanes.h"
 
 namespace dp {
 
@@ -144,8 +145,10 @@ struct RestrictionAxis {
     }
     return a;
   }
-  // The weighted sum of four values, as a tree: (w0 v0 + w3 v3) + (w1 v1 + w2 v2).
-  DP_HD_INLINE float sum(float v0, float v1, float v2, float v3) const {
+  // The weighted sum of four values (or of four lanes of each), as a tree:
+  // (w0 v0 + w3 v3) + (w1 v1 + w2 v2).
+  template <class V>
+  DP_HD_INLINE V sum(V v0, V v1, V v2, V v3) const {
     return (weight[0] * v0 + weight[3] * v3) + (weight[1] * v1 + weight[2] * v2);
   }
 };
@@ -187,13 +190,51 @@ struct RestrictAlong {
   float* target;
   const std::uint8_t* coarse_unknown;  // Last only
   DP_HD void operator()(int i, int j, int k) const {
-    const int at[3] = {i, j, k};
-    const RestrictionAxis a = RestrictionAxis::at(at[Axis], in.n[Axis], out.n[Axis], faces.open(Axis, 0), faces.open(Axis, 1));
+    const RestrictionAxis a = axis_at(i, j, k);
     const float sum = a.sum(source[index_along<Axis>(in, i, j, k, a.fine[0])], source[index_along<Axis>(in, i, j, k, a.fine[1])],
                             source[index_along<Axis>(in, i, j, k, a.fine[2])], source[index_along<Axis>(in, i, j, k, a.fine[3])]);
     const std::size_t c = out.index(i, j, k);
     if constexpr (Last) target[c] = keep_if(0.5f * sum, coarse_unknown[c] != 0);
     else target[c] = sum;
+  }
+
+#if !defined(__CUDA_ARCH__)
+  // Coarse points (i .. i + 3, j, k) as SSE lanes (CpuExec::parallel_for_3d),
+  // the same operations in the same order as one by one. Along y and z the
+  // four read contiguous fine rows with one weight set. Along x they read
+  // fine cells 2i - 1 .. 2i + 8, every other one per term, which only away
+  // from the ends of the row share the weights 1/4, 3/4, 3/4, 1/4; groups
+  // at the ends go one point at a time.
+  void four_along_x(int i, int j, int k) const {
+    using L = FourLanes;
+    if (Axis == 0 && !(i >= 1 && i + 4 < out.n[0] && 2 * i + 8 < in.n[0])) {
+      for (int l = 0; l < L::kCount; ++l) (*this)(i + l, j, k);
+      return;
+    }
+    const RestrictionAxis a = axis_at(i, j, k);
+    L::Value v[4];
+    if constexpr (Axis == 0) {
+      const float* f = source + in.index(2 * i - 1, j, k);
+      const L::Value lo = L::load_row(f), mid = L::load_row(f + 4), hi = L::load_row(f + 6);
+      v[0] = L::pick<0, 2, 4, 6>(lo, mid);
+      v[1] = L::pick<1, 3, 5, 7>(lo, mid);
+      v[2] = L::pick<2, 4, 5, 6>(lo, L::pick<0, 2, 6, 7>(mid, hi));
+      v[3] = L::pick<3, 4, 5, 6>(lo, L::pick<1, 3, 7, 7>(mid, hi));
+    } else {
+      for (int d = 0; d < 4; ++d) v[d] = L::load_row(source + index_along<Axis>(in, i, j, k, a.fine[d]));
+    }
+    const L::Value sum = a.sum(v[0], v[1], v[2], v[3]);
+    const std::size_t c = out.index(i, j, k);
+    if constexpr (Last) L::store(target + c, L::keep_where(0.5f * sum, coarse_unknown + c));
+    else L::store(target + c, sum);
+  }
+  bool lanes_fit() const { return true; }
+#endif
+
+ private:
+  DP_HD_INLINE RestrictionAxis axis_at(int i, int j, int k) const {
+    const int at[3] = {i, j, k};
+    return RestrictionAxis::at(at[Axis], in.n[Axis], out.n[Axis], faces.open(Axis, 0), faces.open(Axis, 1));
   }
 };
 
@@ -210,7 +251,8 @@ struct ProlongationAxis {
     return ProlongationAxis{pair[0], far_inside ? pair[1] : pair[0], prolongation_weight(fine, pair[0], nc, open_low, open_high),
                             far_inside ? prolongation_weight(fine, pair[1], nc, open_low, open_high) : 0.0f};
   }
-  DP_HD_INLINE float lerp(float near_value, float far_value) const { return w_near * near_value + w_far * far_value; }
+  template <class V>
+  DP_HD_INLINE V lerp(V near_value, V far_value) const { return w_near * near_value + w_far * far_value; }
 };
 
 // x_fine += P e_coarse on the fine unknowns, P scaled by ProlongationScale:
@@ -226,12 +268,45 @@ struct ProlongAlong {
   const float* scale;                // Last only
   const std::uint8_t* fine_unknown;  // Last only
   DP_HD void operator()(int i, int j, int k) const {
-    const int at[3] = {i, j, k};
-    const ProlongationAxis a = ProlongationAxis::at(at[Axis], in.n[Axis], faces.open(Axis, 0), faces.open(Axis, 1));
+    const ProlongationAxis a = axis_at(i, j, k);
     const float e = a.lerp(source[index_along<Axis>(in, i, j, k, a.near)], source[index_along<Axis>(in, i, j, k, a.far)]);
     const std::size_t f = out.index(i, j, k);
     if constexpr (Last) target[f] += keep_if(scale[f] * e, fine_unknown[f] != 0);
     else target[f] = e;
+  }
+
+#if !defined(__CUDA_ARCH__)
+  // Fine points (i .. i + 3, j, k) as SSE lanes, as RestrictAlong's. Along
+  // x, from even i, they take coarse cells i/2 - 1 .. i/2 + 2: near ones
+  // i/2, i/2, i/2 + 1, i/2 + 1 and far ones i/2 - 1, i/2 + 1, i/2, i/2 + 2,
+  // with the weights 3/4 and 1/4 only where all of these lie inside.
+  void four_along_x(int i, int j, int k) const {
+    using L = FourLanes;
+    const int c = i / 2;
+    if (Axis == 0 && !(i % 2 == 0 && c >= 1 && c + 2 < in.n[0])) {
+      for (int l = 0; l < L::kCount; ++l) (*this)(i + l, j, k);
+      return;
+    }
+    const ProlongationAxis a = axis_at(i, j, k);
+    L::Value e;
+    if constexpr (Axis == 0) {
+      const L::Value coarse = L::load_row(source + in.index(c - 1, j, k));
+      e = a.lerp(L::pick<1, 1, 2, 2>(coarse, coarse), L::pick<0, 2, 1, 3>(coarse, coarse));
+    } else {
+      e = a.lerp(L::load_row(source + index_along<Axis>(in, i, j, k, a.near)),
+                 L::load_row(source + index_along<Axis>(in, i, j, k, a.far)));
+    }
+    const std::size_t f = out.index(i, j, k);
+    if constexpr (Last) L::store(target + f, L::load_row(target + f) + L::keep_where(L::load_row(scale + f) * e, fine_unknown + f));
+    else L::store(target + f, e);
+  }
+  bool lanes_fit() const { return true; }
+#endif
+
+ private:
+  DP_HD_INLINE ProlongationAxis axis_at(int i, int j, int k) const {
+    const int at[3] = {i, j, k};
+    return ProlongationAxis::at(at[Axis], in.n[Axis], faces.open(Axis, 0), faces.open(Axis, 1));
   }
 };
 

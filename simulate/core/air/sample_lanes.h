@@ -3,7 +3,8 @@
 // once. It is written once over a lanes policy: OneLane, for every caller
 // and for all GPU work, or FourLanes, four consecutive points of an x row
 // as SSE vectors, which the CPU launcher uses for the semi-Lagrangian pass
-// (MacCormack's correction pass stays one point at a time). A back-trace
+// (MacCormack's correction pass stays one point at a time) and for the
+// multigrid transfers (multigrid_mcadams2010.h). A back-trace
 // is some 400 scalar instructions around data-dependent gathers, which g++
 // does not vectorise by itself on baseline x86-64, and it was 40 % of the
 // CPU air step (docs/benchmarks.md). Both policies run the same
@@ -13,6 +14,8 @@
 // sampling path where one point would take the fixed-weight one, and
 // 0 * inf differs from not multiplying; the step stops on such a field.)
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 #include "backend/host_device.h"
 
@@ -67,6 +70,26 @@ struct FourLanes {
   static Value load(const float* p, Index i) { return Value{p[i[0]], p[i[1]], p[i[2]], p[i[3]]}; }
   static void store(float* p, Value v) {
     for (int l = 0; l < kCount; ++l) p[l] = v[l];
+  }
+  // p[0 .. 3], one unaligned load.
+  static Value load_row(const float* p) {
+    Value v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  // Lanes A, B, C, D of the eight of a then b.
+  template <int A, int B, int C, int D>
+  static Value pick(Value a, Value b) {
+#if defined(__clang__)
+    return __builtin_shufflevector(a, b, A, B, C, D);
+#else
+    return __builtin_shuffle(a, b, Int{A, B, C, D});
+#endif
+  }
+  // v where mask[lane] is non-zero, +0 elsewhere: on the bits, as keep_if.
+  static Value keep_where(Value v, const std::uint8_t* mask) {
+    const Int keep = Int{mask[0], mask[1], mask[2], mask[3]} != ints(0);
+    return reinterpret_cast<Value>(reinterpret_cast<Int>(v) & keep);
   }
 
   static constexpr std::size_t kMaxPoints = std::size_t{1} << 31;
