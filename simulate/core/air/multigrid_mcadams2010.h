@@ -205,7 +205,7 @@ struct RestrictAlong {
   // fine cells 2i - 1 .. 2i + 8, every other one per term, which only away
   // from the ends of the row share the weights 1/4, 3/4, 3/4, 1/4; groups
   // at the ends go one point at a time.
-  void four_along_x(int i, int j, int k) const {
+  DP_HOST_INLINE void four_along_x(int i, int j, int k) const {
     using L = FourLanes;
     if (Axis == 0 && !(i >= 1 && i + 4 < out.n[0] && 2 * i + 8 < in.n[0])) {
       for (int l = 0; l < L::kCount; ++l) (*this)(i + l, j, k);
@@ -280,7 +280,7 @@ struct ProlongAlong {
   // x, from even i, they take coarse cells i/2 - 1 .. i/2 + 2: near ones
   // i/2, i/2, i/2 + 1, i/2 + 1 and far ones i/2 - 1, i/2 + 1, i/2, i/2 + 2,
   // with the weights 3/4 and 1/4 only where all of these lie inside.
-  void four_along_x(int i, int j, int k) const {
+  DP_HOST_INLINE void four_along_x(int i, int j, int k) const {
     using L = FourLanes;
     const int c = i / 2;
     if (Axis == 0 && !(i % 2 == 0 && c >= 1 && c + 2 < in.n[0])) {

@@ -41,7 +41,7 @@ struct AdvectSemiLagrangian {
 
 #if !defined(__CUDA_ARCH__)
   // Points (i .. i + 3, j, k) at once, as SSE lanes (CpuExec::parallel_for_3d).
-  void four_along_x(int i, int j, int k) const { advect<FourLanes>(i, j, k); }
+  DP_HOST_INLINE void four_along_x(int i, int j, int k) const { advect<FourLanes>(i, j, k); }
   bool lanes_fit() const {
     return FourLanes::lanes_fit(source.size()) && FourLanes::lanes_fit(velocity.u.size()) &&
            FourLanes::lanes_fit(velocity.v.size()) && FourLanes::lanes_fit(velocity.w.size());

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "backend/blocked_sum.h"
+#include "backend/cpu_isa.h"
 
 namespace dp {
 
@@ -28,6 +29,49 @@ template <class F>
 struct TakesFourAlongX<F, std::void_t<decltype(std::declval<const F&>().four_along_x(0, 0, 0)),
                                       decltype(static_cast<bool>(std::declval<const F&>().lanes_fit()))>>
     : std::true_type {};
+
+// The launcher's loops over a range, each one a functor whose call inlines
+// into both copies (CpuExec::run): elements begin .. end - 1 of a 1-D pass,
+// rows begin .. end - 1 of a box, or blocks begin .. end - 1 of a sum.
+template <class F>
+struct ElementLoop {
+  F f;  // a copy: no store of the loop can change the functor's pointers, so g++ vectorises it
+  std::size_t begin, end;
+  DP_HD_INLINE void operator()() const {
+    for (std::size_t i = begin; i < end; ++i) f(i);
+  }
+};
+
+template <class F>
+struct RowLoop {
+  F f;
+  int nx, ny;
+  std::int64_t begin, end;
+  bool four;  // hand whole groups of four to f.four_along_x (sample_lanes.h)
+  DP_HD_INLINE void operator()() const {
+    for (std::int64_t r = begin; r < end; ++r) {
+      const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
+      int i = 0;
+      if constexpr (TakesFourAlongX<F>::value) {
+        if (four) {
+          for (; i + 4 <= nx; i += 4) f.four_along_x(i, j, k);
+        }
+      }
+      for (; i < nx; ++i) f(i, j, k);
+    }
+  }
+};
+
+template <class ValueAt>
+struct BlockSumLoop {
+  ValueAt f;
+  std::size_t n;
+  double* sums;
+  std::size_t begin, end;
+  DP_HD_INLINE void operator()() const {
+    for (std::size_t b = begin; b < end; ++b) sums[b] = sum_block(b, n, f);
+  }
+};
 
 class CpuExec {
  public:
@@ -43,9 +87,12 @@ class CpuExec {
   // two (and one thread wake-up).
   static constexpr bool kFusesPassesIntoSums = true;
 
-  explicit CpuExec(int threads) : threads_(threads > 0 ? threads : 1) { omp_set_num_threads(threads_); }
+  explicit CpuExec(int threads, CpuIsa isa = detect_cpu_isa()) : threads_(threads > 0 ? threads : 1), isa_(isa) {
+    omp_set_num_threads(threads_);
+  }
 
   int threads() const { return threads_; }
+  CpuIsa isa() const { return isa_; }
   static constexpr const char* name() { return "cpu"; }
 
   template <class T>
@@ -70,15 +117,14 @@ class CpuExec {
   template <class F>
   void parallel_for(std::size_t n, const F& f) const {
     if (!uses_threads(n)) {
-      // A local copy: no store of the loop can change the functor's
-      // pointers, so g++ vectorises the loop as it does the threaded one.
-      const F local = f;
-      for (std::size_t i = 0; i < n; ++i) local(i);
+      run(ElementLoop<F>{f, 0, n});
       return;
     }
-    const std::int64_t count = static_cast<std::int64_t>(n);
-#pragma omp parallel for schedule(static) num_threads(threads_)
-    for (std::int64_t i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
+#pragma omp parallel num_threads(threads_)
+    {
+      const Share s = share_of(n);
+      run(ElementLoop<F>{f, s.begin, s.end});
+    }
   }
 
   // Calls f(i, j, k) for every point of an nx x ny x nz box: threads take
@@ -91,16 +137,14 @@ class CpuExec {
     const std::int64_t rows = static_cast<std::int64_t>(ny) * nz;
     bool four = false;
     if constexpr (TakesFourAlongX<F>::value) four = f.lanes_fit();
-#pragma omp parallel for schedule(static) num_threads(threads_) if (uses_threads(static_cast<std::size_t>(rows) * nx))
-    for (std::int64_t r = 0; r < rows; ++r) {
-      const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
-      int i = 0;
-      if constexpr (TakesFourAlongX<F>::value) {
-        if (four) {
-          for (; i + 4 <= nx; i += 4) f.four_along_x(i, j, k);
-        }
-      }
-      for (; i < nx; ++i) f(i, j, k);
+    if (!uses_threads(static_cast<std::size_t>(rows) * nx)) {
+      run(RowLoop<F>{f, nx, ny, 0, rows, four});
+      return;
+    }
+#pragma omp parallel num_threads(threads_)
+    {
+      const Share s = share_of(static_cast<std::size_t>(rows));
+      run(RowLoop<F>{f, nx, ny, static_cast<std::int64_t>(s.begin), static_cast<std::int64_t>(s.end), four});
     }
   }
 
@@ -131,9 +175,15 @@ class CpuExec {
     if (n == 0) return 0.0;
     std::vector<double> level(sum_block_count(n));
     // Threads by the n elements summed, not by the few blocks they fill.
-    const std::int64_t blocks = static_cast<std::int64_t>(level.size());
-#pragma omp parallel for schedule(static) num_threads(threads_) if (uses_threads(n))
-    for (std::int64_t b = 0; b < blocks; ++b) level[b] = sum_block(static_cast<std::size_t>(b), n, f);
+    if (!uses_threads(n)) {
+      run(BlockSumLoop<ValueAt>{f, n, level.data(), 0, level.size()});
+    } else {
+#pragma omp parallel num_threads(threads_)
+      {
+        const Share s = share_of(level.size());
+        run(BlockSumLoop<ValueAt>{f, n, level.data(), s.begin, s.end});
+      }
+    }
     while (level.size() > 1) {
       std::vector<double> next(sum_block_count(level.size()));
       for (std::size_t b = 0; b < next.size(); ++b) next[b] = sum_block(b, level.size(), BlockSums{level.data()});
@@ -184,7 +234,36 @@ class CpuExec {
  private:
   bool uses_threads(std::size_t elements) const { return threads_ > 1 && elements >= kSerialBelow; }
 
+  // The calling OpenMP thread's contiguous share of [0, n), as
+  // schedule(static) would split it.
+  struct Share {
+    std::size_t begin, end;
+  };
+  static Share share_of(std::size_t n) {
+    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num()), count = static_cast<std::size_t>(omp_get_num_threads());
+    return Share{n * t / count, n * (t + 1) / count};
+  }
+
+  // Runs a loop in the copy for this CPU (cpu_isa.h).
+  template <class Loop>
+  void run(const Loop& loop) const {
+#if DP_CPU_HAS_AVX2_COPY
+    if (isa_ == CpuIsa::Avx2) {
+      run_avx2(loop);
+      return;
+    }
+#endif
+    loop();
+  }
+#if DP_CPU_HAS_AVX2_COPY
+  template <class Loop>
+  DP_AVX2_COPY static void run_avx2(const Loop& loop) {
+    loop();
+  }
+#endif
+
   int threads_;
+  CpuIsa isa_;
 };
 
 }  // namespace dp

@@ -15,3 +15,8 @@
 #else
 #define DP_HD_INLINE __attribute__((always_inline)) inline
 #endif
+
+// The same for host-only functions the CPU launcher calls per group of
+// points (four_along_x): inlined into its loops, they are compiled with
+// each loop's instruction set (cpu_isa.h) instead of the baseline's alone.
+#define DP_HOST_INLINE __attribute__((always_inline)) inline

@@ -1,5 +1,6 @@
 // The air step gathers and sums in a fixed order: its results are the same
-// bits on one thread and on two (DESIGN §3).
+// bits on one thread and on two (DESIGN §3), and in the launcher's baseline
+// and AVX2 copies (cpu_isa.h).
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -9,8 +10,8 @@
 namespace dp {
 namespace {
 
-AirSnapshot run(int threads) {
-  CpuExec exec(threads);
+AirSnapshot run(int threads, CpuIsa isa = detect_cpu_isa(), AirAdvection advection = AirAdvection::MacCormack) {
+  CpuExec exec(threads, isa);
   AirSettings s = test::quiet_air_box(16, 0.64f);
   s.buoyancy_alpha = -3.09f;
   s.buoyancy_beta = 0.0335f;
@@ -18,7 +19,7 @@ AirSnapshot run(int threads) {
   s.vapor_diffusivity = 2.5e-5f;
   s.heat_diffusivity = 2.2e-5f;
   s.ambient_vapor = 0.005;
-  s.advection = AirAdvection::MacCormack;
+  s.advection = advection;
   s.open_face[static_cast<int>(AirFace::YMax)] = true;
   AirInflow in;
   in.box_min = Vec3{0.0f, 0.0f, 0.2f};
@@ -43,8 +44,7 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
-TEST(air_Determinism, OneAndTwoThreadsGiveTheSameBits) {
-  const AirSnapshot a = run(1), b = run(2);
+void expect_same_bits(const AirSnapshot& a, const AirSnapshot& b) {
   EXPECT_TRUE(same_bits(a.vapor, b.vapor));
   EXPECT_TRUE(same_bits(a.temperature, b.temperature));
   EXPECT_TRUE(same_bits(a.u, b.u));
@@ -52,6 +52,19 @@ TEST(air_Determinism, OneAndTwoThreadsGiveTheSameBits) {
   EXPECT_TRUE(same_bits(a.w, b.w));
   EXPECT_EQ(a.ledger.open_out, b.ledger.open_out);
   EXPECT_EQ(a.ledger.inflow_gain, b.ledger.inflow_gain);
+}
+
+TEST(air_Determinism, OneAndTwoThreadsGiveTheSameBits) { expect_same_bits(run(1), run(2)); }
+
+// Both advection schemes (the semi-Lagrangian one four points at a time),
+// vorticity confinement, diffusion, the multigrid CG and the vapor fluxes,
+// each loop compiled for SSE2 and for AVX2 without FMA.
+TEST(air_Determinism, BaselineAndAvx2CopiesGiveTheSameBits) {
+  if (!cpu_runs_avx2_copy()) GTEST_SKIP() << "this CPU or build has no AVX2 copy";
+  for (const AirAdvection a : {AirAdvection::SemiLagrangian, AirAdvection::MacCormack}) {
+    SCOPED_TRACE(a == AirAdvection::MacCormack ? "MacCormack" : "semi-Lagrangian");
+    expect_same_bits(run(2, CpuIsa::Baseline, a), run(2, CpuIsa::Avx2, a));
+  }
 }
 
 }  // namespace

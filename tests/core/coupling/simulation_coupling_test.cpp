@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
+#include "backend/cpu_isa.h"
 #include "coupled_scenes.h"
 
 namespace dp {
@@ -76,6 +79,37 @@ TEST(coupling_Simulation, IndependentOfThreadCount) {
   EXPECT_EQ(a.temperature, b.temperature);
   EXPECT_EQ(one->air()->vapor, two->air()->vapor);
   EXPECT_EQ(one->air()->temperature, two->air()->temperature);
+}
+
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+// The CPU launcher's loops in their baseline and AVX2 copies (cpu_isa.h):
+// SPH, the air step and the exchanges between them, the same bits.
+TEST(coupling_Simulation, SameBitsInTheBaselineAndAvx2Copies) {
+  if (!cpu_runs_avx2_copy()) GTEST_SKIP() << "this CPU or build has no AVX2 copy";
+  SimulationSetup s = test::liquid_cube_in_air(3, 353.15f, 0.0);
+  s.coupling.coefficients.a *= 1000;
+  setenv("DEWPOINT_CPU_ISA", "baseline", 1);
+  auto baseline = make_simulation(ExecutionConfig{Device::Cpu, 2}, s);
+  unsetenv("DEWPOINT_CPU_ISA");
+  auto avx2 = make_simulation(ExecutionConfig{Device::Cpu, 2}, s);
+  for (int step = 0; step < 5; ++step) {
+    baseline->step();
+    avx2->step();
+  }
+  const ParticleSnapshot a = baseline->particles(), b = avx2->particles();
+  EXPECT_TRUE(same_bits(a.position, b.position));
+  EXPECT_TRUE(same_bits(a.velocity, b.velocity));
+  EXPECT_TRUE(same_bits(a.density, b.density));
+  EXPECT_TRUE(same_bits(a.temperature, b.temperature));
+  EXPECT_EQ(a.mass_units, b.mass_units);
+  const auto air_a = baseline->air(), air_b = avx2->air();
+  EXPECT_TRUE(same_bits(air_a->vapor, air_b->vapor));
+  EXPECT_TRUE(same_bits(air_a->temperature, air_b->temperature));
+  EXPECT_TRUE(same_bits(air_a->u, air_b->u));
 }
 
 }  // namespace
