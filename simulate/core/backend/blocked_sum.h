@@ -33,9 +33,11 @@ DP_HD double sum_lane(std::size_t block, unsigned lane, std::size_t n, const Val
 // The sum of one block: its lanes folded as the warp folds them. The CPU's
 // form: the block is walked once in index order, element i adding to lane
 // i mod kSumLanes, which gives every lane sum_lane's terms in sum_lane's
-// order while f reads memory contiguously (and can be vectorised).
+// order while f reads memory contiguously (and can be vectorised). Inlined
+// into the CPU launcher's loop, so that it runs in the loop's instruction
+// set (cpu_isa.h).
 template <class ValueAt>
-DP_HD double sum_block(std::size_t block, std::size_t n, const ValueAt& f) {
+DP_HD_INLINE double sum_block(std::size_t block, std::size_t n, const ValueAt& f) {
   double lane[kSumLanes] = {};
   const std::size_t begin = block * kSumBlock;
   const std::size_t end = begin + kSumBlock < n ? begin + kSumBlock : n;
