@@ -34,9 +34,11 @@ DP_HD inline bool face_is_free(const CellKinds& cells, int axis, const FaceSides
   return cells.faces.open(axis, s.lo ? 1 : 0) && cells.kind[inner] == kAirCell;
 }
 
+// The faces of axis Axis (a compile-time axis folds the index arithmetic).
+template <int Axis>
 struct EnforceFaceVelocity {
+  static constexpr int axis = Axis;
   CellKinds cells;
-  int axis;
   const std::uint8_t* inflow_of_cell;  // 0: none, else index + 1
   const AirInflow* inflows;
   float* u;

@@ -23,9 +23,10 @@ struct BuoyancyParameters {
 // u_a += dt f_a on the faces of one axis, f from the mean of the two cells
 // the face separates (faces on the domain boundary use their one cell; the
 // boundary conditions overwrite them where they are walls).
+template <int Axis>
 struct AddBuoyancy {
+  static constexpr int axis = Axis;
   MacGrid grid;
-  int axis;
   BuoyancyParameters p;
   const double* vapor;
   const float* temperature_excess;  // T - T_amb

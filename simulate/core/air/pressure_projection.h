@@ -40,9 +40,11 @@ struct ComputeProjectionRhs {
   }
 };
 
+// The faces of axis Axis.
+template <int Axis>
 struct SubtractPressureGradient {
+  static constexpr int axis = Axis;
   CellKinds cells;
-  int axis;
   const float* phi;
   float* u;
   DP_HD void operator()(int i, int j, int k) const {

@@ -29,8 +29,11 @@ struct VaporFaceFlux {
   double ambient_vapor;
   float dt;
 
-  // Face (i, j, k) of `axis`.
-  DP_HD double operator()(int axis, const float* u, int i, int j, int k) const {
+  // Face (i, j, k) of axis Axis; a compile-time axis folds the index
+  // arithmetic and the axis selects of every face.
+  template <int Axis>
+  DP_HD double along(const float* u, int i, int j, int k) const {
+    constexpr int axis = Axis;
     const MacGrid& g = cells.grid;
     const FaceSides s = face_sides(g, axis, i, j, k);
     const std::size_t f = g.face(axis, i, j, k);
@@ -92,13 +95,16 @@ struct CellOutflowSpeed {
   DP_HD static float positive_part(float s) { return s > 0.0f ? s : 0.0f; }
 };
 
-// Each face's flux, once (the two cells beside it read the same value).
+// Each face of axis Axis's flux, once (the two cells beside it read the
+// same value).
+template <int Axis>
 struct ComputeVaporFlux {
   VaporFaceFlux flux;
-  int axis;
   const float* u;
   double* out;
-  DP_HD void operator()(int i, int j, int k) const { out[flux.cells.grid.face(axis, i, j, k)] = flux(axis, u, i, j, k); }
+  DP_HD void operator()(int i, int j, int k) const {
+    out[flux.cells.grid.face(Axis, i, j, k)] = flux.template along<Axis>(u, i, j, k);
+  }
 };
 
 // rho_c += sum of fluxes in - fluxes out, over its six faces (gather).

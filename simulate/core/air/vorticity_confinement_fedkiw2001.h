@@ -81,9 +81,10 @@ struct ComputeConfinementForce {
 };
 
 // u_a += dt f_a on one axis' faces, f the mean of the two cells' forces.
+template <int Axis>
 struct AddCellForceToFaces {
+  static constexpr int axis = Axis;
   MacGrid grid;
-  int axis;
   const Vec3* force;
   float dt;
   float* u;
