@@ -8,7 +8,6 @@
 #include <iostream>
 
 #include "air_vdb.h"
-#include "backend/cpu_isa.h"
 #include "checkpoint_folder.h"
 #include "cli_common.h"
 #include "dewpoint/version.h"
@@ -127,7 +126,7 @@ int run(const Options& opt) {
   manifest.rigid_particles_file = "rigid_particles.ply";
   manifest.extra["generator"] = std::string("dewpoint-simulate ") + dp::kVersion;
   manifest.extra["settings"] = {{"device", opt.device}, {"threads", exec.threads}, {"frames", opt.frames}};
-  if (exec.device == dp::Device::Cpu) manifest.extra["settings"]["cpu_isa"] = dp::cpu_isa_name(dp::detect_cpu_isa());
+  if (exec.device == dp::Device::Cpu) manifest.extra["settings"]["cpu_isa"] = dp::cpu_isa_name(exec.cpu_isa);
   if (resumed) {
     manifest.extra["settings"]["resumed_after_frame"] = resumed->frame;
     manifest.frames = frames_through(frames_dir, resumed->frame);

@@ -6,7 +6,7 @@
 
 namespace dp {
 
-std::unique_ptr<Simulation> make_cpu_simulation(int threads, const SimulationSetup& setup);
+std::unique_ptr<Simulation> make_cpu_simulation(int threads, CpuIsa isa, const SimulationSetup& setup);
 std::unique_ptr<Simulation> make_cuda_simulation(const SimulationSetup& setup);
 
 namespace {
@@ -59,7 +59,7 @@ std::unique_ptr<Simulation> make_simulation(const ExecutionConfig& exec, const S
     if (cuda_device_count(&why) == 0) throw std::runtime_error("--device cuda: " + why);
     return make_cuda_simulation(setup);
   }
-  return make_cpu_simulation(exec.threads, setup);
+  return make_cpu_simulation(exec.threads, exec.cpu_isa, setup);
 }
 
 }  // namespace dp

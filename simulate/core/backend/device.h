@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "backend/cpu_isa.h"
+
 namespace dp {
 
 enum class Device { Cpu, Cuda };
@@ -10,6 +12,7 @@ enum class Device { Cpu, Cuda };
 struct ExecutionConfig {
   Device device = Device::Cpu;
   int threads = 0;  // CPU threads; 0 = all hardware threads
+  CpuIsa cpu_isa = detect_cpu_isa();  // the CPU loops' copy (cpu_isa.h); the same bits either way
 };
 
 Device parse_device(const std::string& name);  // throws std::invalid_argument

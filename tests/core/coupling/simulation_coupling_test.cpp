@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 
 #include "backend/cpu_isa.h"
@@ -92,10 +91,8 @@ TEST(coupling_Simulation, SameBitsInTheBaselineAndAvx2Copies) {
   if (!cpu_runs_avx2_copy()) GTEST_SKIP() << "this CPU or build has no AVX2 copy";
   SimulationSetup s = test::liquid_cube_in_air(3, 353.15f, 0.0);
   s.coupling.coefficients.a *= 1000;
-  setenv("DEWPOINT_CPU_ISA", "baseline", 1);
-  auto baseline = make_simulation(ExecutionConfig{Device::Cpu, 2}, s);
-  unsetenv("DEWPOINT_CPU_ISA");
-  auto avx2 = make_simulation(ExecutionConfig{Device::Cpu, 2}, s);
+  auto baseline = make_simulation(ExecutionConfig{Device::Cpu, 2, CpuIsa::Baseline}, s);
+  auto avx2 = make_simulation(ExecutionConfig{Device::Cpu, 2, CpuIsa::Avx2}, s);
   for (int step = 0; step < 5; ++step) {
     baseline->step();
     avx2->step();
