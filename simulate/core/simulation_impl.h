@@ -345,7 +345,8 @@ class SimulationImpl final : public Simulation {
                                                                r.density, r.conductivity, r.specific_heat);
     // Both rates from the temperatures at the start of the step, then both
     // updates: the exchange between the sets stays antisymmetric.
-    exec_.parallel_for(n, ComputeTemperatureRate{liquid_set, rigid_set, m > 0, kernel_, Exec::ptr(liquid_rate_)});
+    exec_.parallel_for(n, ComputeTemperatureRate{liquid_set, rigid_set, m > 0, kernel_, Exec::ptr(liquid_rate_), liquid_pairs(),
+                                                 rigid_pairs()});
     exec_.parallel_for(m, ComputeTemperatureRate{rigid_set, liquid_set, n > 0, kernel_, Exec::ptr(rigid_rate_)});
     exec_.parallel_for(n, IntegrateTemperature{Exec::ptr(liquid_rate_), nullptr, dt, Exec::ptr(liquid_.temperature)});
     exec_.parallel_for(m, IntegrateTemperature{Exec::ptr(rigid_rate_), Exec::ptr(rigid_held_), dt, Exec::ptr(rigid_temperature_)});
@@ -389,6 +390,7 @@ class SimulationImpl final : public Simulation {
     // The step's neighbourhoods, found once for all pressure iterations.
     liquid_list_ = liquid_neighbors_.build(exec_, liquid_.position, liquid_grid_.view(liquid_.position), kernel_.h);
     rigid_list_ = rigid_neighbors_.build(exec_, liquid_.position, rigid_grid_.view(rigid_position_), kernel_.h);
+    compute_gradient_factors();
     exec_.synchronize();
     report.seconds_neighbours = seconds_since(t0);
 
@@ -400,10 +402,11 @@ class SimulationImpl final : public Simulation {
     // The colour gradient serves twice: Akinci 2013's surface normals and
     // the particles' surface areas.
     exec_.parallel_for(n, ComputeSurfaceNormal{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), kernel_,
-                                               particle_mass_, Exec::ptr(normal_)});
+                                               particle_mass_, Exec::ptr(normal_), liquid_pairs()});
     exec_.parallel_for(n, ComputeSurfaceArea{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), particle_mass_, rigid,
                                              Exec::ptr(rigid_volume_), rigid_position_.size() > 0, kernel_,
-                                             area_calibration_, Exec::ptr(surface_area_), Exec::ptr(normal_)});
+                                             area_calibration_, Exec::ptr(surface_area_), Exec::ptr(normal_),
+                                             liquid_pairs(), rigid_pairs()});
     exec_.synchronize();
     double other = seconds_since(t1);
 
@@ -591,9 +594,10 @@ class SimulationImpl final : public Simulation {
     const NeighborList liquid_list = liquid_list_, rigid_list = rigid_list_;
     const CorrectPressure correct{listed_density(Exec::ptr(predicted_)), delta, Exec::ptr(pressure_),
                                   Exec::ptr(density_error_)};
-    const ComputePressureAcceleration pressure_acceleration{liquid_list, rigid_list, Exec::ptr(liquid_.position),
+    const ComputePressureAcceleration pressure_acceleration{liquid_list, rigid_list, Exec::ptr(liquid_factor_),
+                                                            Exec::ptr(rigid_factor_), Exec::ptr(liquid_.position),
                                                             Exec::ptr(rigid_position_), Exec::ptr(liquid_.units),
-                                                            Exec::ptr(rigid_volume_), Exec::ptr(pressure_), kernel_,
+                                                            Exec::ptr(rigid_volume_), Exec::ptr(pressure_),
                                                             particle_mass_, setup_.liquid.rest_density,
                                                             Exec::ptr(pressure_acc_)};
     exec_.parallel_for(n, ClearPressure{Exec::ptr(pressure_), Exec::ptr(pressure_acc_)});
@@ -612,6 +616,21 @@ class SimulationImpl final : public Simulation {
     report.pressure_iterations = iteration;
     report.density_error = error;
     return error <= ps.max_density_error;
+  }
+
+  ListedPairs liquid_pairs() const { return ListedPairs{liquid_list_, Exec::ptr(liquid_factor_)}; }
+  ListedPairs rigid_pairs() const { return ListedPairs{rigid_list_, Exec::ptr(rigid_factor_)}; }
+
+  // The pairs' kernel-gradient factors, for the step's pressure iterations
+  // and gradient sums.
+  void compute_gradient_factors() {
+    const std::size_t n = liquid_.position.size();
+    liquid_factor_.resize(liquid_neighbors_.index.size());
+    rigid_factor_.resize(rigid_neighbors_.index.size());
+    exec_.parallel_for(n, ComputeGradientFactors{liquid_list_, Exec::ptr(liquid_.position), Exec::ptr(liquid_.position), kernel_,
+                                                 Exec::ptr(liquid_factor_)});
+    exec_.parallel_for(n, ComputeGradientFactors{rigid_list_, Exec::ptr(liquid_.position), Exec::ptr(rigid_position_), kernel_,
+                                                 Exec::ptr(rigid_factor_)});
   }
 
   // Sorting the particles themselves (not just an index) keeps neighbours
@@ -699,6 +718,7 @@ class SimulationImpl final : public Simulation {
   Buffer<std::uint32_t> id_tmp_;
   Buffer<MassUnits> units_tmp_;
   Buffer<float> temperature_tmp_, density_, pressure_, density_error_;
+  Buffer<float> liquid_factor_, rigid_factor_;  // per entry of liquid_list_ and rigid_list_
   Buffer<float> surface_area_, liquid_rate_;
   Buffer<Vec3> rigid_position_;
   Buffer<float> rigid_volume_, rigid_temperature_, rigid_rate_, rigid_adhesion_;

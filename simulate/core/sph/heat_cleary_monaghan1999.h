@@ -32,6 +32,7 @@
 #include "math/vec3.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
+#include "sph/neighbor_list.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
@@ -80,9 +81,7 @@ DP_HD inline float pair_conductivity(float kappa_i, float kappa_j) {
 }
 
 // F_ij = x_ij . grad_i W_ij / |x_ij|^2, for |x_ij|^2 = r2 in (0, h^2).
-DP_HD inline float conduction_kernel_factor(const CubicSplineKernel& kernel, Vec3 xij, float r2) {
-  return dot(xij, kernel.gradW(xij)) / r2;
-}
+DP_HD inline float conduction_kernel_factor(Vec3 xij, Vec3 grad, float r2) { return dot(xij, grad) / r2; }
 
 // dT_i/dt of particle i of `self`, from its own set and, if `with_other`,
 // from a second set (liquid <-> rigid). Writes rate[i], K/s.
@@ -92,19 +91,18 @@ struct ComputeTemperatureRate {
   bool with_other;
   CubicSplineKernel kernel;
   float* rate;
+  ListedPairs self_pairs{}, other_pairs{};  // the step's lists for i, if any
 
   // sum_j k_ij V_j (T_i - T_j) F_ij over the neighbours in `set`, with
   // `skip` = i in its own set (no index matches otherwise).
-  DP_HD float exchange_with(const ThermalParticles& set, Vec3 xi, float ti, float kappa_i,
+  DP_HD float exchange_with(const ThermalParticles& set, const ListedPairs& pairs, std::size_t i, float ti, float kappa_i,
                             std::uint32_t skip) const {
-    const float h2 = kernel.h * kernel.h;
     const float kij = pair_conductivity(kappa_i, set.conductivity);
     float sum = 0.0f;
-    set.grid.for_each_near(xi, [&](std::uint32_t j) {
-      Vec3 xij = xi - set.grid.position[j];
-      float r2 = length_squared(xij);
-      if (j == skip || r2 >= h2 || r2 <= 0.0f) return;
-      sum += set.volume_of(j) * (ti - set.temperature[j]) * conduction_kernel_factor(kernel, xij, r2);
+    for_each_pair_gradient(set.grid, pairs, i, self.grid.position[i], kernel, [&](std::uint32_t j, Vec3 xij, Vec3 grad) {
+      const float r2 = length_squared(xij);
+      if (j == skip || r2 <= 0.0f) return;
+      sum += set.volume_of(j) * (ti - set.temperature[j]) * conduction_kernel_factor(xij, grad, r2);
     });
     return kij * sum;
   }
@@ -112,10 +110,9 @@ struct ComputeTemperatureRate {
   DP_HD void operator()(std::size_t i) const {
     const std::uint32_t me = static_cast<std::uint32_t>(i);
     const std::uint32_t nobody = 0xffffffffu;
-    const Vec3 xi = self.grid.position[i];
     const float ti = self.temperature[i];
-    float exchange = exchange_with(self, xi, ti, self.conductivity, me);
-    if (with_other) exchange += exchange_with(other, xi, ti, self.conductivity, nobody);
+    float exchange = exchange_with(self, self_pairs, i, ti, self.conductivity, me);
+    if (with_other) exchange += exchange_with(other, other_pairs, i, ti, self.conductivity, nobody);
     rate[i] = self.volume_of(me) * exchange / (self.mass_of(me) * self.specific_heat);
   }
 };

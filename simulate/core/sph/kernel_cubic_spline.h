@@ -22,11 +22,13 @@ struct CubicSplineKernel {
     return sigma * 2.0f * t * t * t;
   }
 
-  // Gradient with respect to x_i of W(|x_i - x_j|), for d = x_i - x_j.
-  DP_HD Vec3 gradW(Vec3 d) const {
+  // gradW(d) = gradient_factor(d) * d: the scalar part of the gradient, 0
+  // outside the support and at d = 0. Neighbour lists fixed for a step keep
+  // it per pair (ComputeGradientFactors) for the passes that repeat.
+  DP_HD float gradient_factor(Vec3 d) const {
     float r = length(d);
     float q = r / h;
-    if (q >= 1.0f || r <= 1e-9f * h) return Vec3{};
+    if (q >= 1.0f || r <= 1e-9f * h) return 0.0f;
     float dWdq;
     if (q <= 0.5f)
       dWdq = sigma * (18.0f * q * q - 12.0f * q);
@@ -34,8 +36,11 @@ struct CubicSplineKernel {
       float t = 1.0f - q;
       dWdq = -6.0f * sigma * t * t;
     }
-    return (dWdq / (h * r)) * d;
+    return dWdq / (h * r);
   }
+
+  // Gradient with respect to x_i of W(|x_i - x_j|), for d = x_i - x_j.
+  DP_HD Vec3 gradW(Vec3 d) const { return gradient_factor(d) * d; }
 };
 
 }  // namespace dp

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "backend/host_device.h"
+#include "sph/kernel_cubic_spline.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
@@ -58,6 +59,56 @@ struct ClearLastCount {
   std::size_t n;
   DP_HD void operator()(std::size_t) const { count[n] = 0; }
 };
+
+// The scalar part of gradW (CubicSplineKernel::gradient_factor) for every
+// pair of a neighbour list, at the positions of the step's start. Every
+// PCISPH iteration evaluates the pressure force at those positions, so the
+// square root and divisions per pair are done once per step, not once per
+// iteration; the force comes out with the same bits. The step's other
+// gradient sums read them too (ListedPairs).
+struct ComputeGradientFactors {
+  NeighborList list;
+  const Vec3* position;      // of the particles the list belongs to
+  const Vec3* set_position;  // of the particles it lists
+  CubicSplineKernel kernel;
+  float* factor;             // one per list entry
+  DP_HD void operator()(std::size_t i) const {
+    const Vec3 xi = position[i];
+    for (std::uint32_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
+      factor[k] = kernel.gradient_factor(xi - set_position[list.index[k]]);
+  }
+};
+
+// A list's pairs with their gradient factors, for a kernel that can also
+// walk the grid: without a list (offset null) it does.
+struct ListedPairs {
+  NeighborList list{nullptr, nullptr};
+  const float* gradient_factor = nullptr;
+  DP_HD bool present() const { return list.offset != nullptr; }
+};
+
+// Calls f(j, x_i - x_j, gradW_ij) for every particle j of `set` closer to
+// x_i than the support radius, i itself included when `set` is its own.
+// From `pairs` where the step listed them, else by a walk over the grid's
+// cells; the list was filled by that walk, with the same test, so both give
+// the same pairs in the same order and the same sums bit for bit.
+template <class F>
+DP_HD void for_each_pair_gradient(const GridView& set, const ListedPairs& pairs, std::size_t i, Vec3 xi,
+                                  const CubicSplineKernel& kernel, const F& f) {
+  if (pairs.present()) {
+    for (std::uint32_t k = pairs.list.offset[i]; k < pairs.list.offset[i + 1]; ++k) {
+      const std::uint32_t j = pairs.list.index[k];
+      const Vec3 xij = xi - set.position[j];
+      f(j, xij, pairs.gradient_factor[k] * xij);
+    }
+    return;
+  }
+  const float h2 = kernel.h * kernel.h;
+  set.for_each_near(xi, [&](std::uint32_t j) {
+    const Vec3 xij = xi - set.position[j];
+    if (length_squared(xij) < h2) f(j, xij, kernel.gradW(xij));
+  });
+}
 
 // Storage and building of one list on a backend.
 template <class Exec>

@@ -60,16 +60,18 @@ struct CorrectPressure {
 
 // a_i = -sum_j m_j (p_i + p_j)/rho0^2 gradW_ij - sum_b Psi_b p_i/rho0^2 gradW_ib
 // at the current positions (Solenthaler & Pajarola use rho0 in the
-// denominators; Akinci 2012 Eq. 10 for the boundary).
+// denominators; Akinci 2012 Eq. 10 for the boundary), with gradW_ij =
+// factor_ij (x_i - x_j) from ComputeGradientFactors.
 struct ComputePressureAcceleration {
   NeighborList liquid_neighbors;
   NeighborList rigid_neighbors;
+  const float* liquid_factor;
+  const float* rigid_factor;
   const Vec3* position;
   const Vec3* rigid_position;
   const MassUnits* units;
   const float* rigid_volume;
   const float* pressure;
-  CubicSplineKernel kernel;
   float particle_mass;
   float rest_density;
   Vec3* acceleration;
@@ -78,13 +80,15 @@ struct ComputePressureAcceleration {
     const float inv_rho2 = 1.0f / (rest_density * rest_density);
     const float pi = pressure[i];
     Vec3 a{};
-    liquid_neighbors.for_each(i, [&](std::uint32_t j) {
-      if (j == i) return;
-      a -= (particle_mass * weight_of(units[j]) * (pi + pressure[j]) * inv_rho2) * kernel.gradW(xi - position[j]);
-    });
-    rigid_neighbors.for_each(i, [&](std::uint32_t b) {
-      a -= (rest_density * rigid_volume[b] * pi * inv_rho2) * kernel.gradW(xi - rigid_position[b]);
-    });
+    for (std::uint32_t k = liquid_neighbors.offset[i]; k < liquid_neighbors.offset[i + 1]; ++k) {
+      const std::uint32_t j = liquid_neighbors.index[k];
+      if (j == i) continue;
+      a -= (particle_mass * weight_of(units[j]) * (pi + pressure[j]) * inv_rho2) * (liquid_factor[k] * (xi - position[j]));
+    }
+    for (std::uint32_t k = rigid_neighbors.offset[i]; k < rigid_neighbors.offset[i + 1]; ++k) {
+      const std::uint32_t b = rigid_neighbors.index[k];
+      a -= (rest_density * rigid_volume[b] * pi * inv_rho2) * (rigid_factor[k] * (xi - rigid_position[b]));
+    }
     acceleration[i] = a;
   }
 };

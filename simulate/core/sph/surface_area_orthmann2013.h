@@ -35,6 +35,7 @@
 #include "math/vec3.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
+#include "sph/neighbor_list.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
@@ -69,38 +70,31 @@ struct ComputeSurfaceArea {
   // computed this step (ComputeSurfaceNormal); the liquid colour gradient is
   // then read from them instead of summed again.
   const Vec3* akinci_normal = nullptr;
+  ListedPairs liquid_pairs{}, rigid_pairs{};  // the step's lists, if any
 
   DP_HD float volume_of(std::uint32_t j) const { return particle_mass * weight_of(units[j]) / density[j]; }
 
   // The colour gradient of the liquid alone, sum_j V_j grad W_ij.
   DP_HD Vec3 liquid_colour_gradient(std::size_t i) const {
-    const Vec3 xi = liquid.position[i];
-    const float h2 = kernel.h * kernel.h;
     Vec3 n{};
-    liquid.for_each_near(xi, [&](std::uint32_t j) {
-      Vec3 xij = xi - liquid.position[j];
-      if (j == i || length_squared(xij) >= h2) return;
-      n += volume_of(j) * kernel.gradW(xij);
+    for_each_pair_gradient(liquid, liquid_pairs, i, liquid.position[i], kernel, [&](std::uint32_t j, Vec3, Vec3 grad) {
+      if (j != i) n += volume_of(j) * grad;
     });
     return n;
   }
 
   // sum_b V_b grad W_ib: points from x_i towards the wall.
-  DP_HD Vec3 rigid_colour_gradient(Vec3 xi) const {
-    const float h2 = kernel.h * kernel.h;
+  DP_HD Vec3 rigid_colour_gradient(std::size_t i) const {
     Vec3 n{};
-    rigid.for_each_near(xi, [&](std::uint32_t b) {
-      Vec3 xib = xi - rigid.position[b];
-      if (length_squared(xib) >= h2) return;
-      n += rigid_volume[b] * kernel.gradW(xib);
-    });
+    for_each_pair_gradient(rigid, rigid_pairs, i, liquid.position[i], kernel,
+                           [&](std::uint32_t b, Vec3, Vec3 grad) { n += rigid_volume[b] * grad; });
     return n;
   }
 
   DP_HD Vec3 colour_gradient(std::size_t i) const {
     Vec3 n = akinci_normal ? (1.0f / kernel.h) * akinci_normal[i] : liquid_colour_gradient(i);
     if (!with_rigid) return n;
-    Vec3 wall = rigid_colour_gradient(liquid.position[i]);
+    Vec3 wall = rigid_colour_gradient(i);
     float wall_strength = length(wall);
     if (wall_strength <= 0.0f) return n;
     return n - wall_hidden_part(n, (-1.0f / wall_strength) * wall, wall_strength);

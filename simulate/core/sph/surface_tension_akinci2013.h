@@ -28,6 +28,7 @@
 #include "math/vec3.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
+#include "sph/neighbor_list.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
@@ -107,14 +108,11 @@ struct ComputeSurfaceNormal {
   CubicSplineKernel kernel;
   float particle_mass;      // m of a full particle, kg
   Vec3* normal;             // dimensionless
+  ListedPairs pairs{};      // the step's liquid list, if any
   DP_HD void operator()(std::size_t i) const {
-    const Vec3 xi = liquid.position[i];
-    const float h2 = kernel.h * kernel.h;
     Vec3 n{};
-    liquid.for_each_near(xi, [&](std::uint32_t j) {
-      Vec3 xij = xi - liquid.position[j];
-      if (j == i || length_squared(xij) >= h2) return;
-      n += (particle_mass * weight_of(units[j]) / density[j]) * kernel.gradW(xij);
+    for_each_pair_gradient(liquid, pairs, i, liquid.position[i], kernel, [&](std::uint32_t j, Vec3, Vec3 grad) {
+      if (j != i) n += (particle_mass * weight_of(units[j]) / density[j]) * grad;
     });
     normal[i] = kernel.h * n;
   }
