@@ -296,6 +296,9 @@ class SimulationImpl final : public Simulation {
     rigid_grid_.find_ranges(exec_);
     rigid_volume_.resize(m);
     exec_.parallel_for(m, ComputeBoundaryVolume{rigid_grid_.view(rigid_position_), kernel_, Exec::ptr(rigid_volume_)});
+    // Their neighbourhoods among themselves, and the pairs' gradient
+    // factors, hold for the whole run (rigid<->rigid conduction).
+    rigid_rigid_pairs_ = rigid_rigid_neighbors_.build_with_gradients(exec_, rigid_position_, rigid_grid_.view(rigid_position_), kernel_);
 
     Buffer<float> temperature;
     Buffer<std::uint8_t> held;
@@ -345,9 +348,10 @@ class SimulationImpl final : public Simulation {
                                                                r.density, r.conductivity, r.specific_heat);
     // Both rates from the temperatures at the start of the step, then both
     // updates: the exchange between the sets stays antisymmetric.
-    exec_.parallel_for(n, ComputeTemperatureRate{liquid_set, rigid_set, m > 0, kernel_, Exec::ptr(liquid_rate_), liquid_pairs(),
-                                                 rigid_pairs()});
-    exec_.parallel_for(m, ComputeTemperatureRate{rigid_set, liquid_set, n > 0, kernel_, Exec::ptr(rigid_rate_)});
+    exec_.parallel_for(n, ComputeTemperatureRate{liquid_set, rigid_set, m > 0, kernel_, Exec::ptr(liquid_rate_), liquid_pairs_,
+                                                 rigid_pairs_});
+    exec_.parallel_for(m, ComputeTemperatureRate{rigid_set, liquid_set, n > 0, kernel_, Exec::ptr(rigid_rate_),
+                                                 rigid_rigid_pairs_});
     exec_.parallel_for(n, IntegrateTemperature{Exec::ptr(liquid_rate_), nullptr, dt, Exec::ptr(liquid_.temperature)});
     exec_.parallel_for(m, IntegrateTemperature{Exec::ptr(rigid_rate_), Exec::ptr(rigid_held_), dt, Exec::ptr(rigid_temperature_)});
   }
@@ -388,9 +392,8 @@ class SimulationImpl final : public Simulation {
     auto t0 = Clock::now();
     sort_liquid();  // Alg. 1 line 3
     // The step's neighbourhoods, found once for all pressure iterations.
-    liquid_list_ = liquid_neighbors_.build(exec_, liquid_.position, liquid_grid_.view(liquid_.position), kernel_.h);
-    rigid_list_ = rigid_neighbors_.build(exec_, liquid_.position, rigid_grid_.view(rigid_position_), kernel_.h);
-    compute_gradient_factors();
+    liquid_pairs_ = liquid_neighbors_.build_with_gradients(exec_, liquid_.position, liquid_grid_.view(liquid_.position), kernel_);
+    rigid_pairs_ = rigid_neighbors_.build_with_gradients(exec_, liquid_.position, rigid_grid_.view(rigid_position_), kernel_);
     exec_.synchronize();
     report.seconds_neighbours = seconds_since(t0);
 
@@ -402,11 +405,11 @@ class SimulationImpl final : public Simulation {
     // The colour gradient serves twice: Akinci 2013's surface normals and
     // the particles' surface areas.
     exec_.parallel_for(n, ComputeSurfaceNormal{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), kernel_,
-                                               particle_mass_, Exec::ptr(normal_), liquid_pairs()});
+                                               particle_mass_, Exec::ptr(normal_), liquid_pairs_});
     exec_.parallel_for(n, ComputeSurfaceArea{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), particle_mass_, rigid,
                                              Exec::ptr(rigid_volume_), rigid_position_.size() > 0, kernel_,
                                              area_calibration_, Exec::ptr(surface_area_), Exec::ptr(normal_),
-                                             liquid_pairs(), rigid_pairs()});
+                                             liquid_pairs_, rigid_pairs_});
     exec_.synchronize();
     double other = seconds_since(t1);
 
@@ -418,7 +421,8 @@ class SimulationImpl final : public Simulation {
       const SurfaceTensionParameters st{kernel_, particle_mass_, setup_.liquid.rest_density, setup_.liquid.surface_tension};
       exec_.parallel_for(n, ComputeSurfaceTensionAcceleration{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(density_),
                                                               Exec::ptr(normal_), Exec::ptr(rigid_volume_),
-                                                              Exec::ptr(rigid_adhesion_), st, Exec::ptr(tension_acc_)});
+                                                              Exec::ptr(rigid_adhesion_), st, Exec::ptr(tension_acc_),
+                                                              liquid_pairs_, rigid_pairs_});
       // Alg. 1 line 19 (coupling/path_force.h), from the wetting history as
       // the previous step left it: this step's length is known only after
       // the pressure solve.
@@ -449,7 +453,7 @@ class SimulationImpl final : public Simulation {
     auto t3 = Clock::now();
     exec_.parallel_for(n, IntegrateMotion{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_), dt, Exec::ptr(liquid_.velocity),
                                           Exec::ptr(liquid_.position)});  // Alg. 1 line 2, for the next step
-    exec_.parallel_for(n, ApplyXsph{liquid_list_, rigid_list_, Exec::ptr(liquid_.position), Exec::ptr(rigid_position_),
+    exec_.parallel_for(n, ApplyXsph{liquid_pairs_.list, rigid_pairs_.list, Exec::ptr(liquid_.position), Exec::ptr(rigid_position_),
                                     Exec::ptr(liquid_.units), Exec::ptr(density_), Exec::ptr(rigid_volume_),
                                     Exec::ptr(liquid_.velocity), kernel_, particle_mass_, setup_.liquid.xsph_epsilon,
                                     setup_.liquid.boundary_friction, Exec::ptr(velocity_tmp_)});
@@ -561,7 +565,7 @@ class SimulationImpl final : public Simulation {
   // PCISPH: predict, correct pressures until the average density error is
   // below eta (at least min_iterations, at most max_iterations).
   ListedDensity listed_density(const Vec3* position) const {
-    return ListedDensity{liquid_list_, rigid_list_, position, Exec::ptr(rigid_position_), Exec::ptr(liquid_.units),
+    return ListedDensity{liquid_pairs_.list, rigid_pairs_.list, position, Exec::ptr(rigid_position_), Exec::ptr(liquid_.units),
                          Exec::ptr(rigid_volume_), kernel_, particle_mass_, setup_.liquid.rest_density};
   }
 
@@ -591,11 +595,9 @@ class SimulationImpl final : public Simulation {
     const std::size_t n = liquid_.position.size();
     const PressureSolverSettings& ps = setup_.pressure;
     const float delta = pcisph_delta(pcisph_sum_, dt, particle_mass_, setup_.liquid.rest_density);
-    const NeighborList liquid_list = liquid_list_, rigid_list = rigid_list_;
     const CorrectPressure correct{listed_density(Exec::ptr(predicted_)), delta, Exec::ptr(pressure_),
                                   Exec::ptr(density_error_)};
-    const ComputePressureAcceleration pressure_acceleration{liquid_list, rigid_list, Exec::ptr(liquid_factor_),
-                                                            Exec::ptr(rigid_factor_), Exec::ptr(liquid_.position),
+    const ComputePressureAcceleration pressure_acceleration{liquid_pairs_, rigid_pairs_, Exec::ptr(liquid_.position),
                                                             Exec::ptr(rigid_position_), Exec::ptr(liquid_.units),
                                                             Exec::ptr(rigid_volume_), Exec::ptr(pressure_),
                                                             particle_mass_, setup_.liquid.rest_density,
@@ -616,21 +618,6 @@ class SimulationImpl final : public Simulation {
     report.pressure_iterations = iteration;
     report.density_error = error;
     return error <= ps.max_density_error;
-  }
-
-  ListedPairs liquid_pairs() const { return ListedPairs{liquid_list_, Exec::ptr(liquid_factor_)}; }
-  ListedPairs rigid_pairs() const { return ListedPairs{rigid_list_, Exec::ptr(rigid_factor_)}; }
-
-  // The pairs' kernel-gradient factors, for the step's pressure iterations
-  // and gradient sums.
-  void compute_gradient_factors() {
-    const std::size_t n = liquid_.position.size();
-    liquid_factor_.resize(liquid_neighbors_.index.size());
-    rigid_factor_.resize(rigid_neighbors_.index.size());
-    exec_.parallel_for(n, ComputeGradientFactors{liquid_list_, Exec::ptr(liquid_.position), Exec::ptr(liquid_.position), kernel_,
-                                                 Exec::ptr(liquid_factor_)});
-    exec_.parallel_for(n, ComputeGradientFactors{rigid_list_, Exec::ptr(liquid_.position), Exec::ptr(rigid_position_), kernel_,
-                                                 Exec::ptr(rigid_factor_)});
   }
 
   // Sorting the particles themselves (not just an index) keeps neighbours
@@ -712,13 +699,14 @@ class SimulationImpl final : public Simulation {
   AdaptiveParticles<Exec> liquid_;  // the state carried from step to step
   MassAdaptivity<Exec> adaptivity_{UniformGrid{}};
   NeighborListBuffers<Exec> liquid_neighbors_, rigid_neighbors_;
-  NeighborList liquid_list_{}, rigid_list_{};
+  ListedPairs liquid_pairs_{}, rigid_pairs_{};  // of the liquid particles, with the pairs' gradient factors
+  NeighborListBuffers<Exec> rigid_rigid_neighbors_;  // static, built once
+  ListedPairs rigid_rigid_pairs_{};
   AdaptivityParameters adaptivity_params_;
   Buffer<Vec3> position_tmp_, velocity_tmp_, predicted_, nonpressure_acc_, pressure_acc_;
   Buffer<std::uint32_t> id_tmp_;
   Buffer<MassUnits> units_tmp_;
   Buffer<float> temperature_tmp_, density_, pressure_, density_error_;
-  Buffer<float> liquid_factor_, rigid_factor_;  // per entry of liquid_list_ and rigid_list_
   Buffer<float> surface_area_, liquid_rate_;
   Buffer<Vec3> rigid_position_;
   Buffer<float> rigid_volume_, rigid_temperature_, rigid_rate_, rigid_adhesion_;

@@ -38,17 +38,28 @@ struct CountNeighbors {
   }
 };
 
+// Optionally (gradient_factor not null) with each pair's
+// CubicSplineKernel::gradient_factor, where the kernel's support radius is
+// the list's: PCISPH evaluates the pressure force at the positions of the
+// step's start in every iteration, so the square root and divisions per
+// pair are done here once per step, and the pressure force, heat
+// conduction, normals and areas read them (ListedPairs) with the same bits.
 struct FillNeighbors {
   const Vec3* query_position;
   GridView set;
   float radius2;
   const std::uint32_t* offset;
   std::uint32_t* index;
+  CubicSplineKernel kernel{};
+  float* gradient_factor = nullptr;
   DP_HD void operator()(std::size_t i) const {
     const Vec3 xi = query_position[i];
     std::uint32_t k = offset[i];
     set.for_each_near(xi, [&](std::uint32_t j) {
-      if (length_squared(xi - set.position[j]) < radius2) index[k++] = j;
+      const Vec3 xij = xi - set.position[j];
+      if (!(length_squared(xij) < radius2)) return;  // CountNeighbors' test exactly, NaN included
+      if (gradient_factor) gradient_factor[k] = kernel.gradient_factor(xij);
+      index[k++] = j;
     });
   }
 };
@@ -60,25 +71,6 @@ struct ClearLastCount {
   DP_HD void operator()(std::size_t) const { count[n] = 0; }
 };
 
-// The scalar part of gradW (CubicSplineKernel::gradient_factor) for every
-// pair of a neighbour list, at the positions of the step's start. Every
-// PCISPH iteration evaluates the pressure force at those positions, so the
-// square root and divisions per pair are done once per step, not once per
-// iteration; the force comes out with the same bits. The step's other
-// gradient sums read them too (ListedPairs).
-struct ComputeGradientFactors {
-  NeighborList list;
-  const Vec3* position;      // of the particles the list belongs to
-  const Vec3* set_position;  // of the particles it lists
-  CubicSplineKernel kernel;
-  float* factor;             // one per list entry
-  DP_HD void operator()(std::size_t i) const {
-    const Vec3 xi = position[i];
-    for (std::uint32_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
-      factor[k] = kernel.gradient_factor(xi - set_position[list.index[k]]);
-  }
-};
-
 // A list's pairs with their gradient factors, for a kernel that can also
 // walk the grid: without a list (offset null) it does.
 struct ListedPairs {
@@ -87,26 +79,37 @@ struct ListedPairs {
   DP_HD bool present() const { return list.offset != nullptr; }
 };
 
-// Calls f(j, x_i - x_j, gradW_ij) for every particle j of `set` closer to
-// x_i than the support radius, i itself included when `set` is its own.
-// From `pairs` where the step listed them, else by a walk over the grid's
-// cells; the list was filled by that walk, with the same test, so both give
-// the same pairs in the same order and the same sums bit for bit.
+// Calls f(j, x_i - x_j, entry) for every particle j of `set` closer to x_i
+// than the support radius h, i itself included when `set` is its own: from
+// `pairs` where the step listed them (entry: the pair's place in the list),
+// else by a walk over the grid's cells (entry: kNotListed). The list was
+// filled by that walk with the same test, so both give the same pairs in
+// the same order, and the same sums bit for bit.
+inline constexpr std::uint32_t kNotListed = 0xffffffffu;
+
 template <class F>
-DP_HD void for_each_pair_gradient(const GridView& set, const ListedPairs& pairs, std::size_t i, Vec3 xi,
-                                  const CubicSplineKernel& kernel, const F& f) {
+DP_HD void for_each_pair(const GridView& set, const ListedPairs& pairs, std::size_t i, Vec3 xi, float h, const F& f) {
   if (pairs.present()) {
     for (std::uint32_t k = pairs.list.offset[i]; k < pairs.list.offset[i + 1]; ++k) {
       const std::uint32_t j = pairs.list.index[k];
-      const Vec3 xij = xi - set.position[j];
-      f(j, xij, pairs.gradient_factor[k] * xij);
+      f(j, xi - set.position[j], k);
     }
     return;
   }
-  const float h2 = kernel.h * kernel.h;
+  const float h2 = h * h;
   set.for_each_near(xi, [&](std::uint32_t j) {
     const Vec3 xij = xi - set.position[j];
-    if (length_squared(xij) < h2) f(j, xij, kernel.gradW(xij));
+    if (length_squared(xij) < h2) f(j, xij, kNotListed);
+  });
+}
+
+// for_each_pair with f(j, x_i - x_j, gradW_ij): the listed factor where
+// there is one.
+template <class F>
+DP_HD void for_each_pair_gradient(const GridView& set, const ListedPairs& pairs, std::size_t i, Vec3 xi,
+                                  const CubicSplineKernel& kernel, const F& f) {
+  for_each_pair(set, pairs, i, xi, kernel.h, [&](std::uint32_t j, Vec3 xij, std::uint32_t entry) {
+    f(j, xij, entry != kNotListed ? pairs.gradient_factor[entry] * xij : kernel.gradW(xij));
   });
 }
 
@@ -114,18 +117,33 @@ DP_HD void for_each_pair_gradient(const GridView& set, const ListedPairs& pairs,
 template <class Exec>
 struct NeighborListBuffers {
   typename Exec::template Buffer<std::uint32_t> count, offset, index;
+  typename Exec::template Buffer<float> gradient_factor;  // build_with_gradients only
 
   NeighborList build(const Exec& exec, const typename Exec::template Buffer<Vec3>& query, const GridView& set,
                      float radius) {
+    return fill(exec, query, set, radius * radius, CubicSplineKernel{}, false);
+  }
+
+  // The list within the kernel's support, with each pair's gradient factor.
+  ListedPairs build_with_gradients(const Exec& exec, const typename Exec::template Buffer<Vec3>& query, const GridView& set,
+                                   const CubicSplineKernel& kernel) {
+    const NeighborList list = fill(exec, query, set, kernel.h * kernel.h, kernel, true);
+    return ListedPairs{list, Exec::ptr(gradient_factor)};
+  }
+
+ private:
+  NeighborList fill(const Exec& exec, const typename Exec::template Buffer<Vec3>& query, const GridView& set, float r2,
+                    const CubicSplineKernel& kernel, bool with_gradients) {
     const std::size_t n = query.size();
-    const float r2 = radius * radius;
     count.resize(n + 1);
     exec.parallel_for(n, CountNeighbors{Exec::ptr(query), set, r2, Exec::ptr(count)});
     exec.parallel_for(1, ClearLastCount{Exec::ptr(count), n});
     exec.exclusive_scan(count, offset);
     const std::uint32_t total = Exec::download_one(offset, n);
     index.resize(total);
-    exec.parallel_for(n, FillNeighbors{Exec::ptr(query), set, r2, Exec::ptr(offset), Exec::ptr(index)});
+    if (with_gradients) gradient_factor.resize(total);
+    exec.parallel_for(n, FillNeighbors{Exec::ptr(query), set, r2, Exec::ptr(offset), Exec::ptr(index), kernel,
+                                       with_gradients ? Exec::ptr(gradient_factor) : nullptr});
     return NeighborList{Exec::ptr(offset), Exec::ptr(index)};
   }
 };

@@ -59,14 +59,12 @@ struct CorrectPressure {
 };
 
 // a_i = -sum_j m_j (p_i + p_j)/rho0^2 gradW_ij - sum_b Psi_b p_i/rho0^2 gradW_ib
-// at the current positions (Solenthaler & Pajarola use rho0 in the
-// denominators; Akinci 2012 Eq. 10 for the boundary), with gradW_ij =
-// factor_ij (x_i - x_j) from ComputeGradientFactors.
+// at the positions of the step's start (Solenthaler & Pajarola use rho0 in
+// the denominators; Akinci 2012 Eq. 10 for the boundary), with the pairs'
+// gradient factors the step's lists keep (FillNeighbors).
 struct ComputePressureAcceleration {
-  NeighborList liquid_neighbors;
-  NeighborList rigid_neighbors;
-  const float* liquid_factor;
-  const float* rigid_factor;
+  ListedPairs liquid_pairs;
+  ListedPairs rigid_pairs;
   const Vec3* position;
   const Vec3* rigid_position;
   const MassUnits* units;
@@ -80,14 +78,18 @@ struct ComputePressureAcceleration {
     const float inv_rho2 = 1.0f / (rest_density * rest_density);
     const float pi = pressure[i];
     Vec3 a{};
-    for (std::uint32_t k = liquid_neighbors.offset[i]; k < liquid_neighbors.offset[i + 1]; ++k) {
-      const std::uint32_t j = liquid_neighbors.index[k];
+    const NeighborList& liquid = liquid_pairs.list;
+    for (std::uint32_t k = liquid.offset[i]; k < liquid.offset[i + 1]; ++k) {
+      const std::uint32_t j = liquid.index[k];
       if (j == i) continue;
-      a -= (particle_mass * weight_of(units[j]) * (pi + pressure[j]) * inv_rho2) * (liquid_factor[k] * (xi - position[j]));
+      const Vec3 grad = liquid_pairs.gradient_factor[k] * (xi - position[j]);
+      a -= (particle_mass * weight_of(units[j]) * (pi + pressure[j]) * inv_rho2) * grad;
     }
-    for (std::uint32_t k = rigid_neighbors.offset[i]; k < rigid_neighbors.offset[i + 1]; ++k) {
-      const std::uint32_t b = rigid_neighbors.index[k];
-      a -= (rest_density * rigid_volume[b] * pi * inv_rho2) * (rigid_factor[k] * (xi - rigid_position[b]));
+    const NeighborList& rigid = rigid_pairs.list;
+    for (std::uint32_t k = rigid.offset[i]; k < rigid.offset[i + 1]; ++k) {
+      const std::uint32_t b = rigid.index[k];
+      const Vec3 grad = rigid_pairs.gradient_factor[k] * (xi - rigid_position[b]);
+      a -= (rest_density * rigid_volume[b] * pi * inv_rho2) * grad;
     }
     acceleration[i] = a;
   }

@@ -141,17 +141,16 @@ struct ComputeSurfaceTensionAcceleration {
   const float* rigid_adhesion;  // beta of the rigid material each boundary particle samples
   SurfaceTensionParameters p;
   Vec3* acceleration;           // m/s^2
+  ListedPairs liquid_pairs{}, rigid_pairs{};  // the step's lists, if any
 
   DP_HD Vec3 cohesion_and_curvature(std::size_t i) const {
     const Vec3 xi = liquid.position[i], ni = normal[i];
-    const float h2 = p.kernel.h * p.kernel.h;
     const float mi = p.particle_mass * weight_of(units[i]), rhoi = density[i];
     const AkinciCohesionKernel cohesion = AkinciCohesionKernel::with_support(p.kernel.h);
     Vec3 a{};
-    liquid.for_each_near(xi, [&](std::uint32_t j) {
-      Vec3 xij = xi - liquid.position[j];
-      float r2 = length_squared(xij);
-      if (j == i || r2 >= h2) return;
+    for_each_pair(liquid, liquid_pairs, i, xi, p.kernel.h, [&](std::uint32_t j, Vec3 xij, std::uint32_t) {
+      const float r2 = length_squared(xij);
+      if (j == i) return;
       float mj = p.particle_mass * weight_of(units[j]);
       Vec3 pair = -curvature_mass_ratio(mi, mj) * (ni - normal[j]);
       // Coincident particles have no direction to attract along.
@@ -165,14 +164,11 @@ struct ComputeSurfaceTensionAcceleration {
   }
 
   DP_HD Vec3 adhesion_to_boundary(std::size_t i) const {
-    const Vec3 xi = liquid.position[i];
-    const float h2 = p.kernel.h * p.kernel.h;
     const AkinciAdhesionKernel adhesion = AkinciAdhesionKernel::with_support(p.kernel.h);
     Vec3 a{};
-    rigid.for_each_near(xi, [&](std::uint32_t b) {
-      Vec3 xib = xi - rigid.position[b];
-      float r2 = length_squared(xib);
-      if (r2 >= h2 || r2 <= 0.0f) return;
+    for_each_pair(rigid, rigid_pairs, i, liquid.position[i], p.kernel.h, [&](std::uint32_t b, Vec3 xib, std::uint32_t) {
+      const float r2 = length_squared(xib);
+      if (r2 <= 0.0f) return;
       float r = sqrtf(r2);
       float psi = p.rest_density * rigid_volume[b];
       a -= (rigid_adhesion[b] * psi * adhesion.A(r) / r) * xib;
