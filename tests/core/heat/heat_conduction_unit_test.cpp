@@ -10,6 +10,8 @@
 
 #include "heat_scene.h"
 #include "sph/heat_cleary_monaghan1999.h"
+#include "sph/neighbor_list.h"
+#include "sph/surface_tension_akinci2013.h"
 
 namespace dp {
 namespace {
@@ -86,6 +88,38 @@ TEST(heat_Determinism, RatesAreBitIdenticalForAnyThreadCount) {
 
 // sum_i m_i C_i dT_i/dt vanishes pair by pair, so only rounding remains:
 // compared with the sum of the terms' magnitudes.
+// The step hands the kernels its neighbour lists with each pair's gradient
+// factor (FillNeighbors); the lists are filled by the grid walk, so the sums
+// must come out bit for bit as the walk's. A list out of the walk's order,
+// or a factor that is not gradW's, fails here.
+TEST(heat_NeighbourLists, ListedPairsGiveTheGridWalksRatesAndNormalsBitForBit) {
+  CpuExec exec(2);
+  MixedScene scene(exec);
+  NeighborListBuffers<CpuExec> liquid_liquid, liquid_rigid, rigid_rigid;
+  const ListedPairs ll = liquid_liquid.build_with_gradients(exec, scene.liquid.position, scene.liquid.view(), scene.kernel);
+  const ListedPairs lr = liquid_rigid.build_with_gradients(exec, scene.liquid.position, scene.rigid.view(), scene.kernel);
+  const ListedPairs rr = rigid_rigid.build_with_gradients(exec, scene.rigid.position, scene.rigid.view(), scene.kernel);
+  ASSERT_GT(liquid_liquid.index.size(), 20 * scene.liquid.size());  // the pairs are there to be compared
+  ASSERT_GT(liquid_rigid.index.size(), scene.liquid.size());
+
+  const ThermalParticles l = scene.liquid_particles(), b = scene.rigid_particles();
+  const std::size_t n = scene.liquid.size(), m = scene.rigid.size();
+  std::vector<float> walked(n), listed(n), rigid_walked(m), rigid_listed(m);
+  exec.parallel_for(n, ComputeTemperatureRate{l, b, true, scene.kernel, walked.data()});
+  exec.parallel_for(n, ComputeTemperatureRate{l, b, true, scene.kernel, listed.data(), ll, lr});
+  exec.parallel_for(m, ComputeTemperatureRate{b, l, true, scene.kernel, rigid_walked.data()});
+  exec.parallel_for(m, ComputeTemperatureRate{b, l, true, scene.kernel, rigid_listed.data(), rr});
+  EXPECT_TRUE(bitwise_equal(walked, listed));
+  EXPECT_TRUE(bitwise_equal(rigid_walked, rigid_listed));
+
+  std::vector<Vec3> normal_walked(n), normal_listed(n);
+  exec.parallel_for(n, ComputeSurfaceNormal{scene.liquid.view(), scene.units.data(), scene.density.data(), scene.kernel,
+                                            scene.particle_mass, normal_walked.data()});
+  exec.parallel_for(n, ComputeSurfaceNormal{scene.liquid.view(), scene.units.data(), scene.density.data(), scene.kernel,
+                                            scene.particle_mass, normal_listed.data(), ll});
+  EXPECT_EQ(0, std::memcmp(normal_walked.data(), normal_listed.data(), n * sizeof(Vec3)));
+}
+
 TEST(heat_Conservation, HeatPowersCancelAcrossSetsWithAdaptiveMasses) {
   CpuExec exec(2);
   MixedScene scene(exec);
