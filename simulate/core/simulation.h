@@ -42,6 +42,9 @@ struct PressureSolverSettings {
   float max_density_error = 0.005f;  // eta: average (rho* - rho0)/rho0
   int min_iterations = 3;
   int max_iterations = 100;
+  // Start each solve from the last step's pressures instead of zero
+  // (departure, docs/paper-map.md: SolveStart in sph/pcisph_solenthaler2009.h).
+  bool warm_start = false;
 };
 
 // Settling before the first step (Simulation::settle): the liquid alone,

@@ -279,7 +279,8 @@ class SimulationImpl final : public Simulation {
   void resize_scratch(std::size_t n) {
     for (auto* b : {&position_tmp_, &velocity_tmp_, &predicted_, &nonpressure_acc_, &pressure_acc_, &normal_, &tension_acc_})
       b->resize(n);
-    for (auto* b : {&temperature_tmp_, &density_, &pressure_, &density_error_, &surface_area_, &liquid_rate_}) b->resize(n);
+    for (auto* b : {&temperature_tmp_, &density_, &pressure_, &pressure_start_, &density_error_, &surface_area_, &liquid_rate_})
+      b->resize(n);
     id_tmp_.resize(n);
     units_tmp_.resize(n);
   }
@@ -388,7 +389,10 @@ class SimulationImpl final : public Simulation {
     // Alg. 1 line 18 of the previous step, run here so that the state a
     // frame sees (positions and the step's densities, pressures, areas) is
     // of one particle set.
-    if (running) adapt_masses();
+    // A warm solve reads each particle's pressure from the last step, which
+    // merging and removal leave to other particles.
+    bool warm = setup_.pressure.warm_start;
+    if (running && adapt_masses()) warm = false;
     auto t0 = Clock::now();
     sort_liquid();  // Alg. 1 line 3
     // The step's neighbourhoods, found once for all pressure iterations.
@@ -435,7 +439,7 @@ class SimulationImpl final : public Simulation {
     other += seconds_since(t1);
 
     auto t2 = Clock::now();
-    const float dt = solve_pressure_converging(planned_dt, report);  // Alg. 1 line 6
+    const float dt = solve_pressure_converging(planned_dt, warm ? SolveStart::Warm : SolveStart::Cold, report);  // Alg. 1 line 6
     report.dt = dt;
     exec_.synchronize();
     report.seconds_pressure = seconds_since(t2);
@@ -572,15 +576,19 @@ class SimulationImpl final : public Simulation {
   // Alg. 1 line 6 at the planned step or, where PCISPH does not converge
   // within its cap, at the first halving of it that does; after 4 halvings
   // the last solve stands. CFL mode only: a fixed step is the user's.
-  float solve_pressure_converging(float dt, StepReport& report) {
+  float solve_pressure_converging(float dt, SolveStart start, StepReport& report) {
     constexpr int kMaxHalvings = 4;
-    bool converged = solve_pressure(dt, report);
+    const std::size_t n = liquid_.position.size();
+    // A halved step starts where the first solve started.
+    if (start == SolveStart::Warm) exec_.parallel_for(n, CopyPressure{Exec::ptr(pressure_), Exec::ptr(pressure_start_)});
+    bool converged = solve_pressure(dt, start, report);
     int halvings = 0;
     while (!converged && setup_.time_step.mode == TimeStepMode::Cfl && halvings < kMaxHalvings &&
            0.5f * dt >= setup_.time_step.min_step) {
       dt *= 0.5f;
       ++halvings;
-      converged = solve_pressure(dt, report);
+      if (start == SolveStart::Warm) exec_.parallel_for(n, CopyPressure{Exec::ptr(pressure_start_), Exec::ptr(pressure_)});
+      converged = solve_pressure(dt, start, report);
     }
     report.pressure_halvings = halvings;
     if (halvings > 0)
@@ -591,7 +599,7 @@ class SimulationImpl final : public Simulation {
   }
 
   // Returns whether the average density error came below eta.
-  bool solve_pressure(float dt, StepReport& report) {
+  bool solve_pressure(float dt, SolveStart start, StepReport& report) {
     const std::size_t n = liquid_.position.size();
     const PressureSolverSettings& ps = setup_.pressure;
     const float delta = pcisph_delta(pcisph_sum_, dt, particle_mass_, setup_.liquid.rest_density);
@@ -602,7 +610,12 @@ class SimulationImpl final : public Simulation {
                                                             Exec::ptr(rigid_volume_), Exec::ptr(pressure_),
                                                             particle_mass_, setup_.liquid.rest_density,
                                                             Exec::ptr(pressure_acc_)};
-    exec_.parallel_for(n, ClearPressure{Exec::ptr(pressure_), Exec::ptr(pressure_acc_)});
+    if (start == SolveStart::Cold) {
+      exec_.parallel_for(n, ClearPressure{Exec::ptr(pressure_), Exec::ptr(pressure_acc_)});
+    } else {
+      exec_.parallel_for(n, StartPressure{kWarmStartShare, Exec::ptr(pressure_)});
+      exec_.parallel_for(n, pressure_acceleration);
+    }
     int iteration = 0;
     float error = 0;
     while (iteration < ps.max_iterations) {
@@ -636,17 +649,23 @@ class SimulationImpl final : public Simulation {
     liquid_.id.swap(id_tmp_);
     liquid_.units.swap(units_tmp_);
     liquid_.temperature.swap(temperature_tmp_);
+    if (setup_.pressure.warm_start) {  // the last step's pressures, for a warm solve
+      exec_.parallel_for(n, Gather<float>{order, Exec::ptr(pressure_), Exec::ptr(temperature_tmp_)});
+      pressure_.swap(temperature_tmp_);
+    }
     liquid_grid_.find_ranges(exec_);
   }
 
   // Merging and redistribution (paper Sec. 6.3, Eq. 18), only while some
   // particle is lighter than the adaptivity threshold.
-  void adapt_masses() {
+  // Returns whether it ran (and may have merged, removed or reordered particles).
+  bool adapt_masses() {
     const std::size_t n = liquid_.size();
     const auto small = static_cast<MassUnits>(adaptivity_params_.small_weight * kFullParticleUnits);
-    if (exec_.find_first(n, IsLighterThan{Exec::ptr(liquid_.units), small}) == n) return;
+    if (exec_.find_first(n, IsLighterThan{Exec::ptr(liquid_.units), small}) == n) return false;
     adaptivity_.adapt(exec_, liquid_, adaptivity_params_);
     if (liquid_.size() != n) resize_scratch(liquid_.size());
+    return true;
   }
 
   void check_stability(Phase phase) {
@@ -706,7 +725,7 @@ class SimulationImpl final : public Simulation {
   Buffer<Vec3> position_tmp_, velocity_tmp_, predicted_, nonpressure_acc_, pressure_acc_;
   Buffer<std::uint32_t> id_tmp_;
   Buffer<MassUnits> units_tmp_;
-  Buffer<float> temperature_tmp_, density_, pressure_, density_error_;
+  Buffer<float> temperature_tmp_, density_, pressure_, pressure_start_, density_error_;
   Buffer<float> surface_area_, liquid_rate_;
   Buffer<Vec3> rigid_position_;
   Buffer<float> rigid_volume_, rigid_temperature_, rigid_rate_, rigid_adhesion_;

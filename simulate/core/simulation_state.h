@@ -22,8 +22,8 @@ struct LiquidState {
   std::vector<float> temperature;        // K
   std::vector<std::uint32_t> mass_units; // sph/mass_units.h
   std::vector<std::uint32_t> id;
-  // The last step's values, not read by the next step but by snapshots
-  // (frames written right after a restore show them).
+  // The last step's values, read by snapshots (frames written right after a
+  // restore show them); the pressures also by a warm-started solve.
   std::vector<float> density, pressure, surface_area;
   std::uint32_t next_id = 0;             // for emitted particles
 };

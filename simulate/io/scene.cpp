@@ -273,6 +273,7 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
         positive(*p, "max_density_error", p->number("max_density_error", s.pressure_solver.max_density_error));
     s.pressure_solver.min_iterations = static_cast<int>(p->integer("min_iterations", s.pressure_solver.min_iterations));
     s.pressure_solver.max_iterations = static_cast<int>(p->integer("max_iterations", s.pressure_solver.max_iterations));
+    s.pressure_solver.warm_start = p->boolean("warm_start", s.pressure_solver.warm_start);
     if (s.pressure_solver.min_iterations < 1) throw p->error("min_iterations", "expected a positive integer");
     if (s.pressure_solver.max_iterations < s.pressure_solver.min_iterations)
       throw p->error("max_iterations", "expected at least min_iterations");

@@ -75,6 +75,7 @@ struct PressureSolverSettings {
   double max_density_error = 0.005;
   int min_iterations = 3;
   int max_iterations = 100;
+  bool warm_start = false;
 };
 
 // simulation.settle: the liquid comes to rest before t = 0.

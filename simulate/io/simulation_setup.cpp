@@ -150,6 +150,7 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   setup.pressure.max_density_error = static_cast<float>(s.pressure_solver.max_density_error);
   setup.pressure.min_iterations = s.pressure_solver.min_iterations;
   setup.pressure.max_iterations = s.pressure_solver.max_iterations;
+  setup.pressure.warm_start = s.pressure_solver.warm_start;
   setup.settle.duration = static_cast<float>(s.settle.duration_s);
   setup.settle.damping = static_cast<float>(s.settle.damping_per_s);
   setup.max_speed = static_cast<float>(s.max_speed_m_s);

@@ -39,6 +39,26 @@ struct PredictPosition {
   }
 };
 
+// Where a solve starts. Solenthaler & Pajarola start every step from zero
+// pressure, so every step builds the liquid's whole hydrostatic pressure
+// again: a column some 60 particles deep (the glass) then needs 25-45
+// iterations a step at eta = 0.5 %. Warm, a step starts from a share of the
+// last step's pressures, as IISPH does (Ihmsen et al. 2014, "Implicit
+// Incompressible SPH", Sec. 3.3: half of them). Pressures here only grow
+// within a solve (CorrectPressure), so a start that is too high could only
+// relax over the following steps: at half, an excess halves every step (a
+// share of 0.8 or more let it build up until the glass's liquid blew up
+// while settling). Departure, docs/paper-map.md.
+enum class SolveStart { Cold, Warm };
+inline constexpr float kWarmStartShare = 0.5f;
+
+// p_i = share * p_i, from which a warm solve's first prediction starts.
+struct StartPressure {
+  float share;
+  float* pressure;
+  DP_HD void operator()(std::size_t i) const { pressure[i] *= share; }
+};
+
 // The density at the predicted positions, over the neighbours listed at the
 // start of the step (as Solenthaler & Pajarola keep the step's
 // neighbourhoods), clamped from below at rho0 so that the free surface does
@@ -93,6 +113,12 @@ struct ComputePressureAcceleration {
     }
     acceleration[i] = a;
   }
+};
+
+struct CopyPressure {
+  const float* from;
+  float* to;
+  DP_HD void operator()(std::size_t i) const { to[i] = from[i]; }
 };
 
 struct ClearPressure {
