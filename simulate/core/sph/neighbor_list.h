@@ -38,9 +38,10 @@ struct CountNeighbors {
   }
 };
 
-// Optionally (gradient_factor not null) with each pair's
-// CubicSplineKernel::gradient_factor, where the kernel's support radius is
-// the list's: PCISPH evaluates the pressure force at the positions of the
+// Fills each particle's slice, as CountNeighbors sized it. Where
+// gradient_factor is given, also each pair's
+// CubicSplineKernel::gradient_factor (the kernel's support radius is the
+// list's): PCISPH evaluates the pressure force at the positions of the
 // step's start in every iteration, so the square root and divisions per
 // pair are done here once per step, and the pressure force, heat
 // conduction, normals and areas read them (ListedPairs) with the same bits.
