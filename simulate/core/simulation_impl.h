@@ -578,16 +578,15 @@ class SimulationImpl final : public Simulation {
   // the last solve stands. CFL mode only: a fixed step is the user's.
   float solve_pressure_converging(float dt, SolveStart start, StepReport& report) {
     constexpr int kMaxHalvings = 4;
-    const std::size_t n = liquid_.position.size();
-    // A halved step starts where the first solve started.
-    if (start == SolveStart::Warm) exec_.parallel_for(n, CopyPressure{Exec::ptr(pressure_), Exec::ptr(pressure_start_)});
+    // The last step's pressures, kept aside: a halved step starts where the
+    // first solve started.
+    if (start == SolveStart::Warm) pressure_start_.swap(pressure_);
     bool converged = solve_pressure(dt, start, report);
     int halvings = 0;
     while (!converged && setup_.time_step.mode == TimeStepMode::Cfl && halvings < kMaxHalvings &&
            0.5f * dt >= setup_.time_step.min_step) {
       dt *= 0.5f;
       ++halvings;
-      if (start == SolveStart::Warm) exec_.parallel_for(n, CopyPressure{Exec::ptr(pressure_start_), Exec::ptr(pressure_)});
       converged = solve_pressure(dt, start, report);
     }
     report.pressure_halvings = halvings;
@@ -613,7 +612,7 @@ class SimulationImpl final : public Simulation {
     if (start == SolveStart::Cold) {
       exec_.parallel_for(n, ClearPressure{Exec::ptr(pressure_), Exec::ptr(pressure_acc_)});
     } else {
-      exec_.parallel_for(n, StartPressure{kWarmStartShare, Exec::ptr(pressure_)});
+      exec_.parallel_for(n, StartPressure{kWarmStartShare, Exec::ptr(pressure_start_), Exec::ptr(pressure_)});
       exec_.parallel_for(n, pressure_acceleration);
     }
     int iteration = 0;

@@ -52,11 +52,13 @@ struct PredictPosition {
 enum class SolveStart { Cold, Warm };
 inline constexpr float kWarmStartShare = 0.5f;
 
-// p_i = share * p_i, from which a warm solve's first prediction starts.
+// p_i = share * (the last step's p_i), from which a warm solve's first
+// prediction starts.
 struct StartPressure {
   float share;
+  const float* last;
   float* pressure;
-  DP_HD void operator()(std::size_t i) const { pressure[i] *= share; }
+  DP_HD void operator()(std::size_t i) const { pressure[i] = share * last[i]; }
 };
 
 // The density at the predicted positions, over the neighbours listed at the
@@ -113,12 +115,6 @@ struct ComputePressureAcceleration {
     }
     acceleration[i] = a;
   }
-};
-
-struct CopyPressure {
-  const float* from;
-  float* to;
-  DP_HD void operator()(std::size_t i) const { to[i] = from[i]; }
 };
 
 struct ClearPressure {
