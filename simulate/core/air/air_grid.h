@@ -235,8 +235,7 @@ class AirGrid {
   void enforce_boundaries(const Exec& exec) {
     for_each_axis([&](auto axis) {
       constexpr int a = decltype(axis)::value;
-      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
-                           EnforceFaceVelocity<a>{cells(), Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[a])});
+      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), face_enforcement<a>());
     });
   }
 
@@ -249,11 +248,13 @@ class AirGrid {
                            AddBuoyancy<a>{grid_, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt, Exec::ptr(u_[a])});
     });
     if (settings_.vorticity_epsilon > 0) {
+      const DifferenceScales scales = difference_scales(grid_.dx);
       exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, CellCentredVelocity{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]),
-                                               Exec::ptr(cell_velocity_)});
-      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeVorticity{cells(), Exec::ptr(cell_velocity_), Exec::ptr(omega_), Exec::ptr(omega_norm_)});
-      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeConfinementForce{cells(), Exec::ptr(omega_), Exec::ptr(omega_norm_),
-                                                   settings_.vorticity_epsilon, Exec::ptr(force_)});
+                                                                             Exec::ptr(cell_velocity_)});
+      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz,
+                           ComputeVorticity{cells(), scales, Exec::ptr(cell_velocity_), Exec::ptr(omega_), Exec::ptr(omega_norm_)});
+      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeConfinementForce{cells(), scales, Exec::ptr(omega_), Exec::ptr(omega_norm_),
+                                                                                 settings_.vorticity_epsilon, Exec::ptr(force_)});
       for_each_axis([&](auto axis) {
         constexpr int a = decltype(axis)::value;
         exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
@@ -438,6 +439,11 @@ class AirGrid {
   }
 
  private:
+  template <int Axis>
+  EnforceFaceVelocity<Axis> face_enforcement() {
+    return EnforceFaceVelocity<Axis>{cells(), Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[Axis])};
+  }
+
   // project() where every prescribed face already holds its value.
   PcgResult project_enforced(const Exec& exec) {
     const std::size_t n = grid_.cell_count();

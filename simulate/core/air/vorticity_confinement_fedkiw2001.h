@@ -21,28 +21,47 @@ struct CellCentredVelocity {
     grid.cell_coords(c, i, j, k);
     (*this)(i, j, k);
   }
-  DP_HD void operator()(int i, int j, int k) const {
-    out[grid.cell(i, j, k)] = Vec3{0.5f * (u[grid.face(0, i, j, k)] + u[grid.face(0, i + 1, j, k)]),
-                  0.5f * (v[grid.face(1, i, j, k)] + v[grid.face(1, i, j + 1, k)]),
-                  0.5f * (w[grid.face(2, i, j, k)] + w[grid.face(2, i, j, k + 1)])};
+  DP_HD void operator()(int i, int j, int k) const { out[grid.cell(i, j, k)] = at(i, j, k); }
+  DP_HD_INLINE Vec3 at(int i, int j, int k) const {
+    return Vec3{0.5f * (u[grid.face(0, i, j, k)] + u[grid.face(0, i + 1, j, k)]),
+                0.5f * (v[grid.face(1, i, j, k)] + v[grid.face(1, i, j + 1, k)]),
+                0.5f * (w[grid.face(2, i, j, k)] + w[grid.face(2, i, j, k + 1)])};
   }
 };
 
-// d field / d x_axis at an air cell, from its air neighbours.
+// 1/dx and 1/(2 dx), the scales of a one-sided and a central difference,
+// found once per pass rather than divided out per derivative.
+struct DifferenceScales {
+  float one_step, two_steps;
+};
+DP_HD inline DifferenceScales difference_scales(float dx) { return DifferenceScales{1.0f / dx, 1.0f / (2.0f * dx)}; }
+
+// A cell-centred field's value at cell (i, j, k).
 template <class T>
-DP_HD_INLINE T air_derivative(const CellKinds& cells, const T* field, int i, int j, int k, int axis) {
+struct CellValues {
+  MacGrid grid;
+  const T* value;
+  DP_HD_INLINE T operator()(int i, int j, int k) const { return value[grid.cell(i, j, k)]; }
+};
+
+// d value / d x_axis at air cell (i, j, k), from its air neighbours:
+// central between two, one-sided next to one, 0 without; value_at(i, j, k)
+// gives a cell's value.
+template <class ValueAt>
+DP_HD_INLINE auto air_derivative(const CellKinds& cells, DifferenceScales scales, const ValueAt& value_at, int i, int j,
+                                 int k, int axis) -> decltype(value_at(i, j, k)) {
   int pi, pj, pk, mi, mj, mk;
   const bool plus = cells.neighbour(i, j, k, axis, 1, pi, pj, pk) && cells.at(pi, pj, pk) == kAirCell;
   const bool minus = cells.neighbour(i, j, k, axis, 0, mi, mj, mk) && cells.at(mi, mj, mk) == kAirCell;
-  const MacGrid& g = cells.grid;
-  const T hi = plus ? field[g.cell(pi, pj, pk)] : field[g.cell(i, j, k)];
-  const T lo = minus ? field[g.cell(mi, mj, mk)] : field[g.cell(i, j, k)];
-  const int steps = (plus ? 1 : 0) + (minus ? 1 : 0);
-  return steps == 0 ? (hi - hi) : (hi - lo) * (1.0f / (static_cast<float>(steps) * g.dx));
+  const auto hi = plus ? value_at(pi, pj, pk) : value_at(i, j, k);
+  const auto lo = minus ? value_at(mi, mj, mk) : value_at(i, j, k);
+  if (!plus && !minus) return hi - hi;
+  return (hi - lo) * (plus && minus ? scales.two_steps : scales.one_step);
 }
 
 struct ComputeVorticity {
   CellKinds cells;
+  DifferenceScales scales;
   const Vec3* velocity;  // cell-centred
   Vec3* omega;
   float* omega_norm;
@@ -53,9 +72,10 @@ struct ComputeVorticity {
       omega_norm[c] = 0;
       return;
     }
-    const Vec3 dx = air_derivative(cells, velocity, i, j, k, 0);
-    const Vec3 dy = air_derivative(cells, velocity, i, j, k, 1);
-    const Vec3 dz = air_derivative(cells, velocity, i, j, k, 2);
+    const CellValues<Vec3> at{cells.grid, velocity};
+    const Vec3 dx = air_derivative(cells, scales, at, i, j, k, 0);
+    const Vec3 dy = air_derivative(cells, scales, at, i, j, k, 1);
+    const Vec3 dz = air_derivative(cells, scales, at, i, j, k, 2);
     omega[c] = Vec3{dy.z - dz.y, dz.x - dx.z, dx.y - dy.x};
     omega_norm[c] = length(omega[c]);
   }
@@ -63,6 +83,7 @@ struct ComputeVorticity {
 
 struct ComputeConfinementForce {
   CellKinds cells;
+  DifferenceScales scales;
   const Vec3* omega;
   const float* omega_norm;
   float epsilon;
@@ -71,8 +92,9 @@ struct ComputeConfinementForce {
     const std::size_t c = cells.grid.cell(i, j, k);
     force[c] = Vec3{};
     if (cells.kind[c] != kAirCell) return;
-    const Vec3 grad{air_derivative(cells, omega_norm, i, j, k, 0), air_derivative(cells, omega_norm, i, j, k, 1),
-                    air_derivative(cells, omega_norm, i, j, k, 2)};
+    const CellValues<float> norm_at{cells.grid, omega_norm};
+    const Vec3 grad{air_derivative(cells, scales, norm_at, i, j, k, 0), air_derivative(cells, scales, norm_at, i, j, k, 1),
+                    air_derivative(cells, scales, norm_at, i, j, k, 2)};
     const float g = length(grad);
     // A flat |omega| has no direction to confine towards.
     if (!(g > 1e-20f)) return;
