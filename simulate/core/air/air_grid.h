@@ -34,6 +34,7 @@
 #include "air/conjugate_gradient.h"
 #include "air/diffusion_explicit.h"
 #include "air/maccormack_selle2008.h"
+#include "air/padded_field.h"
 #include "air/pressure_projection.h"
 #include "air/semi_lagrangian_stam1999.h"
 #include "air/vapor_transport_fv.h"
@@ -157,10 +158,13 @@ class AirGrid {
                                    settings.buoyancy_beta};
     const std::size_t n = grid_.cell_count();
     for (auto* b : {&kind_, &static_kind_, &inflow_of_, &unknown_}) b->resize(n);
-    for (auto* b : {&temperature_excess_, &temperature_tmp_, &temperature_back_, &phi_, &rhs_, &omega_norm_}) b->resize(n);
+    for (auto* b : {&temperature_excess_, &temperature_tmp_, &temperature_back_, &phi_, &rhs_}) b->resize(n);
+    const std::size_t slab = static_cast<std::size_t>(grid_.nx) * grid_.ny;
+    omega_norm_.resize(n, slab);
+    cell_velocity_.resize(n, slab);
     vapor_.resize(n);
     vapor_tmp_.resize(n);
-    for (auto* b : {&cell_velocity_, &omega_, &force_}) b->resize(n);
+    for (auto* b : {&omega_, &force_}) b->resize(n);
     for (int a = 0; a < 3; ++a) {
       u_[a].resize(grid_.face_count(a));
       u_tmp_[a].resize(grid_.face_count(a));
@@ -199,6 +203,7 @@ class AirGrid {
     PartTimer timer{exec, settings_.time_parts};
     apply_inflows(exec);
     enforce_boundaries(exec);
+    mark_unknowns(exec);
     timer.lap(report.seconds.inflows);
     // Scalars move with the last projected, divergence-free velocity, which
     // neither piles vapor up nor thins it out.
@@ -248,13 +253,17 @@ class AirGrid {
                            AddBuoyancy<a>{grid_, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt, Exec::ptr(u_[a])});
     });
     if (settings_.vorticity_epsilon > 0) {
+      // The finest pressure level's stencil marks each cell's air neighbours
+      // (mark_unknowns ran at the start of the step).
+      const std::uint8_t* air = pcg_.preconditioner().view(0).stencil;
       const DifferenceScales scales = difference_scales(grid_.dx);
+      const CellStrides strides = cell_strides(grid_);
+      const std::size_t n = grid_.cell_count();
       exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, CellCentredVelocity{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]),
-                                                                             Exec::ptr(cell_velocity_)});
-      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz,
-                           ComputeVorticity{cells(), scales, Exec::ptr(cell_velocity_), Exec::ptr(omega_), Exec::ptr(omega_norm_)});
-      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeConfinementForce{cells(), scales, Exec::ptr(omega_), Exec::ptr(omega_norm_),
-                                                                                 settings_.vorticity_epsilon, Exec::ptr(force_)});
+                                                                             cell_velocity_.ptr()});
+      exec.parallel_for(n, ComputeVorticity{air, strides, scales, cell_velocity_.ptr(), Exec::ptr(omega_), omega_norm_.ptr()});
+      exec.parallel_for(n, ComputeConfinementForce{air, strides, scales, grid_.dx, Exec::ptr(omega_), omega_norm_.ptr(),
+                                                   settings_.vorticity_epsilon, Exec::ptr(force_)});
       for_each_axis([&](auto axis) {
         constexpr int a = decltype(axis)::value;
         exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
@@ -337,6 +346,7 @@ class AirGrid {
   // phi is the first guess: the pressure changes little between steps.
   PcgResult project(const Exec& exec) {
     enforce_boundaries(exec);
+    mark_unknowns(exec);
     return project_enforced(exec);
   }
 
@@ -444,11 +454,17 @@ class AirGrid {
     return EnforceFaceVelocity<Axis>{cells(), Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[Axis])};
   }
 
-  // project() where every prescribed face already holds its value.
-  PcgResult project_enforced(const Exec& exec) {
-    const std::size_t n = grid_.cell_count();
-    exec.parallel_for(n, MarkAirUnknowns{Exec::ptr(kind_), Exec::ptr(unknown_)});
+  // The pressure's unknowns, the air cells, and the stencils over them,
+  // from the cells' kinds: once per step, as the kinds change only when the
+  // cells are classified.
+  void mark_unknowns(const Exec& exec) {
+    exec.parallel_for(grid_.cell_count(), MarkAirUnknowns{Exec::ptr(kind_), Exec::ptr(unknown_)});
     pcg_.set_unknowns(exec, unknown_);
+  }
+
+  // project() where every prescribed face already holds its value and the
+  // unknowns are marked.
+  PcgResult project_enforced(const Exec& exec) {
     exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ComputeProjectionRhs{cells(), Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]), Exec::ptr(rhs_)});
     const PcgResult result = pcg_.solve(exec, rhs_, phi_, settings_.projection_tolerance, settings_.projection_max_iterations);
     for_each_axis([&](auto axis) {
@@ -484,9 +500,11 @@ class AirGrid {
   Buffer<AirInflow> inflows_;
   Buffer<std::uint8_t> kind_, static_kind_, inflow_of_, unknown_;
   Buffer<float> u_[3], u_tmp_[3], u_back_[3];
-  Buffer<float> temperature_excess_, temperature_tmp_, temperature_back_, phi_, rhs_, omega_norm_;
+  Buffer<float> temperature_excess_, temperature_tmp_, temperature_back_, phi_, rhs_;
+  PaddedField<Exec, float> omega_norm_;  // read by the vorticity stencil
+  PaddedField<Exec, Vec3> cell_velocity_;
   Buffer<double> vapor_, vapor_tmp_, vapor_flux_[3];
-  Buffer<Vec3> cell_velocity_, omega_, force_;
+  Buffer<Vec3> omega_, force_;
   PoissonPcg<Exec> pcg_;
   AirLedger ledger_;
 };

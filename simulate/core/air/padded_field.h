@@ -1,6 +1,6 @@
 #pragma once
 // A vector with room to read past both ends, for stencils that load their
-// neighbours unconditionally (air/poisson_level.h).
+// neighbours unconditionally (air/poisson_level.h, the vorticity passes).
 #include <cstddef>
 
 namespace dp {
@@ -10,7 +10,7 @@ namespace dp {
 // all six neighbours unconditionally and selects, which the CPU vectorises
 // (a sweep 2.8 times faster than loads behind bit tests, same values). The
 // padding is allocated, never written; what it holds is never selected.
-template <class Exec>
+template <class Exec, class T = float>
 class PaddedField {
  public:
   void resize(std::size_t n, std::size_t pad) {
@@ -20,11 +20,11 @@ class PaddedField {
   }
   std::size_t size() const { return n_; }
   std::size_t padding() const { return pad_; }
-  float* ptr() { return Exec::ptr(storage_) + pad_; }
-  const float* ptr() const { return Exec::ptr(storage_) + pad_; }
+  T* ptr() { return Exec::ptr(storage_) + pad_; }
+  const T* ptr() const { return Exec::ptr(storage_) + pad_; }
 
  private:
-  typename Exec::template Buffer<float> storage_;
+  typename Exec::template Buffer<T> storage_;
   std::size_t n_ = 0, pad_ = 0;
 };
 

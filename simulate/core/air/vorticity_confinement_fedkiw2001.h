@@ -6,6 +6,7 @@
 // walls and non-air cells. epsilon is in 1/s in SI units.
 #include "air/cell_kind.h"
 #include "air/mac_grid.h"
+#include "air/poisson_level.h"
 
 namespace dp {
 
@@ -36,69 +37,75 @@ struct DifferenceScales {
 };
 DP_HD inline DifferenceScales difference_scales(float dx) { return DifferenceScales{1.0f / dx, 1.0f / (2.0f * dx)}; }
 
-// A cell-centred field's value at cell (i, j, k).
+// d value / d x_axis at an air cell, from its air neighbours: central
+// between two, one-sided next to one, 0 without. `at` points to the cell's
+// value in a padded field (padded_field.h), `stride` is the axis' index
+// step, and `air` the cell's air neighbours as the pressure stencil marks
+// them (PoissonLevel::stencil: bit 2 axis + side, the unknowns being the
+// air cells). Both neighbours are loaded and the bits select, without a
+// branch; the values are those of the branching form.
 template <class T>
-struct CellValues {
-  MacGrid grid;
-  const T* value;
-  DP_HD_INLINE T operator()(int i, int j, int k) const { return value[grid.cell(i, j, k)]; }
-};
-
-// d value / d x_axis at air cell (i, j, k), from its air neighbours:
-// central between two, one-sided next to one, 0 without; value_at(i, j, k)
-// gives a cell's value.
-template <class ValueAt>
-DP_HD_INLINE auto air_derivative(const CellKinds& cells, DifferenceScales scales, const ValueAt& value_at, int i, int j,
-                                 int k, int axis) -> decltype(value_at(i, j, k)) {
-  int pi, pj, pk, mi, mj, mk;
-  const bool plus = cells.neighbour(i, j, k, axis, 1, pi, pj, pk) && cells.at(pi, pj, pk) == kAirCell;
-  const bool minus = cells.neighbour(i, j, k, axis, 0, mi, mj, mk) && cells.at(mi, mj, mk) == kAirCell;
-  const auto hi = plus ? value_at(pi, pj, pk) : value_at(i, j, k);
-  const auto lo = minus ? value_at(mi, mj, mk) : value_at(i, j, k);
-  if (!plus && !minus) return hi - hi;
+DP_HD_INLINE T air_derivative(const T* at, std::ptrdiff_t stride, unsigned air, int axis, DifferenceScales scales) {
+  const bool minus = (air >> (2 * axis)) & 1u, plus = (air >> (2 * axis + 1)) & 1u;
+  const T here = at[0], above = at[stride], below = at[-stride];
+  const T hi = plus ? above : here;
+  const T lo = minus ? below : here;
   return (hi - lo) * (plus && minus ? scales.two_steps : scales.one_step);
 }
 
+// The index steps along x, y and z of a grid's cells.
+struct CellStrides {
+  std::ptrdiff_t axis[3];
+};
+DP_HD inline CellStrides cell_strides(const MacGrid& g) {
+  const std::ptrdiff_t row = g.nx, slab = row * g.ny;
+  return CellStrides{{1, row, slab}};
+}
+
+// omega = curl u and |omega| at the air cells, 0 elsewhere.
 struct ComputeVorticity {
-  CellKinds cells;
+  const std::uint8_t* air;  // the pressure stencil's bits (PoissonLevel::stencil)
+  CellStrides strides;
   DifferenceScales scales;
-  const Vec3* velocity;  // cell-centred
+  const Vec3* velocity;  // cell-centred, padded by a slab
   Vec3* omega;
   float* omega_norm;
-  DP_HD void operator()(int i, int j, int k) const {
-    const std::size_t c = cells.grid.cell(i, j, k);
-    if (cells.kind[c] != kAirCell) {
+  DP_HD void operator()(std::size_t c) const {
+    const unsigned bits = air[c];
+    if (!(bits & PoissonLevel::kStencilUnknown)) {
       omega[c] = Vec3{};
       omega_norm[c] = 0;
       return;
     }
-    const CellValues<Vec3> at{cells.grid, velocity};
-    const Vec3 dx = air_derivative(cells, scales, at, i, j, k, 0);
-    const Vec3 dy = air_derivative(cells, scales, at, i, j, k, 1);
-    const Vec3 dz = air_derivative(cells, scales, at, i, j, k, 2);
+    const Vec3* at = velocity + c;
+    const Vec3 dx = air_derivative(at, strides.axis[0], bits, 0, scales);
+    const Vec3 dy = air_derivative(at, strides.axis[1], bits, 1, scales);
+    const Vec3 dz = air_derivative(at, strides.axis[2], bits, 2, scales);
     omega[c] = Vec3{dy.z - dz.y, dz.x - dx.z, dx.y - dy.x};
     omega_norm[c] = length(omega[c]);
   }
 };
 
 struct ComputeConfinementForce {
-  CellKinds cells;
+  const std::uint8_t* air;  // as in ComputeVorticity
+  CellStrides strides;
   DifferenceScales scales;
+  float dx;
   const Vec3* omega;
-  const float* omega_norm;
+  const float* omega_norm;  // padded by a slab
   float epsilon;
   Vec3* force;
-  DP_HD void operator()(int i, int j, int k) const {
-    const std::size_t c = cells.grid.cell(i, j, k);
+  DP_HD void operator()(std::size_t c) const {
     force[c] = Vec3{};
-    if (cells.kind[c] != kAirCell) return;
-    const CellValues<float> norm_at{cells.grid, omega_norm};
-    const Vec3 grad{air_derivative(cells, scales, norm_at, i, j, k, 0), air_derivative(cells, scales, norm_at, i, j, k, 1),
-                    air_derivative(cells, scales, norm_at, i, j, k, 2)};
+    const unsigned bits = air[c];
+    if (!(bits & PoissonLevel::kStencilUnknown)) return;
+    const float* at = omega_norm + c;
+    const Vec3 grad{air_derivative(at, strides.axis[0], bits, 0, scales), air_derivative(at, strides.axis[1], bits, 1, scales),
+                    air_derivative(at, strides.axis[2], bits, 2, scales)};
     const float g = length(grad);
     // A flat |omega| has no direction to confine towards.
     if (!(g > 1e-20f)) return;
-    force[c] = (epsilon * cells.grid.dx) * cross((1.0f / g) * grad, omega[c]);
+    force[c] = (epsilon * dx) * cross((1.0f / g) * grad, omega[c]);
   }
 };
 
