@@ -38,10 +38,19 @@ struct OneLane {
   DP_HD_INLINE static Index to_index(Int v) { return v; }
   // Points first, first + 1, ... (one here).
   DP_HD_INLINE static Int consecutive(int first) { return first; }
-  DP_HD_INLINE static Index consecutive_index(std::size_t first) { return static_cast<Index>(first); }
-  DP_HD_INLINE static Index offset(std::ptrdiff_t d) { return d; }  // the same for every point
   DP_HD_INLINE static Value weight(Real t) { return static_cast<T>(t); }
   DP_HD_INLINE static Value load(const T* p, Index i) { return p[i]; }
+  // p[first], p[first + 1], ... (one here).
+  DP_HD_INLINE static Value load_consecutive(const T* p, std::size_t first) { return p[first]; }
+  // Lattice corners: each point's p[c + d] for d = 0, di, dj, dj + di, dk,
+  // dk + di, dk + dj, dk + dj + di, in that order.
+  struct Corners {
+    Value v[8];
+  };
+  DP_HD_INLINE static Corners corners(const T* p, Index c, std::ptrdiff_t di, std::ptrdiff_t dj, std::ptrdiff_t dk) {
+    const T* at = p + c;
+    return Corners{{at[0], at[di], at[dj], at[dj + di], at[dk], at[dk + di], at[dk + dj], at[dk + dj + di]}};
+  }
   DP_HD_INLINE static void store(T* p, Value v) { *p = v; }
 };
 
@@ -64,10 +73,40 @@ struct FourLanes {
   static Real to_real(Int v) { return __builtin_convertvector(v, Real); }
   static Index to_index(Int v) { return v; }
   static Int consecutive(int first) { return Int{first, first + 1, first + 2, first + 3}; }
-  static Index consecutive_index(std::size_t first) { return consecutive(static_cast<int>(first)); }
-  static Index offset(std::ptrdiff_t d) { return ints(static_cast<int>(d)); }
   static Value weight(Real t) { return t; }
   static Value load(const float* p, Index i) { return Value{p[i[0]], p[i[1]], p[i[2]], p[i[3]]}; }
+  static Value load_consecutive(const float* p, std::size_t first) { return load_row(p + first); }
+  // OneLane::corners for four points: each lane's position is taken out of
+  // the vector once, and its eight corners are loaded at fixed offsets from
+  // it, rather than every corner's position being formed in a vector and
+  // taken apart lane by lane (a third of the back-trace's instructions).
+  struct Corners {
+    Value v[8];
+  };
+  DP_HOST_INLINE static Corners corners(const float* p, Index c, std::ptrdiff_t di, std::ptrdiff_t dj, std::ptrdiff_t dk) {
+    const float* const at[kCount] = {p + c[0], p + c[1], p + c[2], p + c[3]};
+    Corners k;
+    if (di == 1) {  // neighbours along x: one 8-byte load per lane for both
+      gather_pair(at, 0, k.v[0], k.v[1]);
+      gather_pair(at, dj, k.v[2], k.v[3]);
+      gather_pair(at, dk, k.v[4], k.v[5]);
+      gather_pair(at, dk + dj, k.v[6], k.v[7]);
+      return k;
+    }
+    const std::ptrdiff_t d[8] = {0, di, dj, dj + di, dk, dk + di, dk + dj, dk + dj + di};
+    for (int n = 0; n < 8; ++n) k.v[n] = gather(at, d[n]);
+    return k;
+  }
+  DP_HOST_INLINE static Value gather(const float* const* at, std::ptrdiff_t d) { return Value{at[0][d], at[1][d], at[2][d], at[3][d]}; }
+  // Each lane's at[d] into `first` and at[d + 1] into `second`.
+  DP_HOST_INLINE static void gather_pair(const float* const* at, std::ptrdiff_t d, Value& first, Value& second) {
+    typedef double Pairs __attribute__((vector_size(16)));
+    double q[kCount];
+    for (int l = 0; l < kCount; ++l) std::memcpy(&q[l], at[l] + d, sizeof(double));
+    const Value lanes01 = reinterpret_cast<Value>(Pairs{q[0], q[1]}), lanes23 = reinterpret_cast<Value>(Pairs{q[2], q[3]});
+    first = pick<0, 2, 4, 6>(lanes01, lanes23);
+    second = pick<1, 3, 5, 7>(lanes01, lanes23);
+  }
   static void store(float* p, Value v) {
     for (int l = 0; l < kCount; ++l) p[l] = v[l];
   }

@@ -110,11 +110,9 @@ struct Lattice {
     using V = typename L::Value;
     const std::ptrdiff_t row = nx, slab = row * ny;
     const typename L::Index c = (L::to_index(z.i) * ny + L::to_index(y.i)) * nx + L::to_index(x.i);
-    const typename L::Index di = L::offset(x.step), dj = L::offset(y.step * row), dk = L::offset(z.step * slab);
-    const V c000 = L::load(value, c), c100 = L::load(value, c + di), c010 = L::load(value, c + dj),
-            c110 = L::load(value, c + dj + di);
-    const V c001 = L::load(value, c + dk), c101 = L::load(value, c + dk + di), c011 = L::load(value, c + dk + dj),
-            c111 = L::load(value, c + dk + dj + di);
+    const typename L::Corners corner = L::corners(value, c, x.step, y.step * row, z.step * slab);
+    const V c000 = corner.v[0], c100 = corner.v[1], c010 = corner.v[2], c110 = corner.v[3];
+    const V c001 = corner.v[4], c101 = corner.v[5], c011 = corner.v[6], c111 = corner.v[7];
     if (lo && hi) {
       *lo = min8(c000, c100, c010, c110, c001, c101, c011, c111);
       *hi = -min8(-c000, -c100, -c010, -c110, -c001, -c101, -c011, -c111);
@@ -132,23 +130,25 @@ struct Lattice {
   // the general sample.
   template <int Wx, int Wy, int Wz, class L = OneLane<T>>
   DP_HD_INLINE typename L::Value sample_fixed(int i, int j, int k) const {
-    const std::ptrdiff_t row = nx, slab = row * ny;
-    const typename L::Index c = L::consecutive_index(index(i, j, k));
+    const std::size_t row = static_cast<std::size_t>(nx), slab = row * ny;
+    const std::size_t c = index(i, j, k);
     const auto y0 = along_y<Wx, Wy, L>(c, row);
     if constexpr (Wz == 0) return y0;
-    else return lerp<L>(y0, along_y<Wx, Wy, L>(c + L::offset(slab), row), L::reals(0.5f));
+    else return lerp<L>(y0, along_y<Wx, Wy, L>(c + slab, row), L::reals(0.5f));
   }
 
  private:
+  // Points c, c + 1, ... of the lattice (L's lanes) lie next to each other
+  // in memory: one load per value, no gather.
   template <int Wx, class L>
-  DP_HD_INLINE typename L::Value along_x(typename L::Index c) const {
-    if constexpr (Wx == 0) return L::load(value, c);
-    else return lerp<L>(L::load(value, c), L::load(value, c + L::offset(1)), L::reals(0.5f));
+  DP_HD_INLINE typename L::Value along_x(std::size_t c) const {
+    if constexpr (Wx == 0) return L::load_consecutive(value, c);
+    else return lerp<L>(L::load_consecutive(value, c), L::load_consecutive(value, c + 1), L::reals(0.5f));
   }
   template <int Wx, int Wy, class L>
-  DP_HD_INLINE typename L::Value along_y(typename L::Index c, std::ptrdiff_t row) const {
+  DP_HD_INLINE typename L::Value along_y(std::size_t c, std::size_t row) const {
     if constexpr (Wy == 0) return along_x<Wx, L>(c);
-    else return lerp<L>(along_x<Wx, L>(c), along_x<Wx, L>(c + L::offset(row)), L::reals(0.5f));
+    else return lerp<L>(along_x<Wx, L>(c), along_x<Wx, L>(c + row), L::reals(0.5f));
   }
   template <class V>
   DP_HD_INLINE static V min2(V a, V b) { return b < a ? b : a; }
