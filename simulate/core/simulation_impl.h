@@ -487,7 +487,7 @@ class SimulationImpl final : public Simulation {
   void step_air(float dt, StepReport& report) {
     if (!air_) return;
     const auto t = Clock::now();
-    air_->classify(exec_, liquid_grid_.view(liquid_.position));
+    air_->classify(exec_, ParticlePositions{Exec::ptr(liquid_.position), liquid_.size()});
     report.air = air_->step(exec_, dt);
     exec_.synchronize();
     report.seconds_grid = seconds_since(t);

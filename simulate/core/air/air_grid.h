@@ -192,9 +192,10 @@ class AirGrid {
                         Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2])};
   }
 
-  // Alg. 1 line 7, from the liquid particles in their neighbour grid.
-  void classify(const Exec& exec, const GridView& liquid) {
-    exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, ClassifyCells{grid_, liquid, Exec::ptr(static_kind_), Exec::ptr(kind_)});
+  // Alg. 1 line 7, from the liquid particles.
+  void classify(const Exec& exec, ParticlePositions liquid) {
+    exec.parallel_for(grid_.cell_count(), CopyBytes{Exec::ptr(static_kind_), Exec::ptr(kind_)});
+    if (liquid.count > 0) exec.parallel_for(liquid.count, MarkLiquidCells{grid_, liquid, Exec::ptr(static_kind_), Exec::ptr(kind_)});
   }
 
   // Alg. 1 lines 8-11.

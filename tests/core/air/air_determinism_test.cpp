@@ -33,7 +33,7 @@ AirSnapshot run(int threads, CpuIsa isa = detect_cpu_isa(), AirAdvection advecti
   test::SortedParticles liquid(exec, {Vec3{0.5f, 0.05f, 0.5f}, Vec3{0.52f, 0.05f, 0.5f}}, s.domain_min, s.domain_max, 0.02f);
   AirGrid<CpuExec> air(exec, s, Vec3{0, -9.81f, 0}, rigid.view());
   for (int n = 0; n < 8; ++n) {
-    air.classify(exec, liquid.view());
+    air.classify(exec, liquid.positions());
     air.step(exec, 0.01f);
   }
   return air.snapshot();

@@ -55,6 +55,7 @@ struct SortedParticles {
     grid.find_ranges(exec);
   }
   GridView view() const { return grid.view(position); }
+  ParticlePositions positions() const { return ParticlePositions{position.data(), position.size()}; }
 };
 
 // Points on a sphere's surface, about `spacing` apart (Fibonacci lattice).

@@ -437,7 +437,7 @@ TEST(air_Classification, CellsTakeTheKindOfWhatTheyHold) {
   test::SortedParticles liquid(exec, {Vec3{0.31f, 0.72f, 0.99f}, Vec3{0.56f, 0.51f, 0.59f}, Vec3{0.12f, 0.02f, 0.03f}},
                                s.domain_min, s.domain_max, 0.04f);
   AirGrid<CpuExec> air(exec, s, Vec3{0, -9.81f, 0}, rigid.view());
-  air.classify(exec, liquid.view());
+  air.classify(exec, liquid.positions());
   const AirSnapshot a = air.snapshot();
   const MacGrid& g = a.grid;
   int counts[4] = {0, 0, 0, 0};
@@ -450,6 +450,48 @@ TEST(air_Classification, CellsTakeTheKindOfWhatTheyHold) {
   EXPECT_EQ(counts[kLiquidCell], 1);
   EXPECT_EQ(counts[kInflowCell], 2);
   EXPECT_EQ(counts[kAirCell], 1000 - 4);
+}
+
+// The per-step scatter (MarkLiquidCells) against the per-cell gather it
+// replaced: a cell is liquid exactly when any_particle_in_box finds a liquid
+// particle in it, here for particles scattered at random, on cell faces and
+// corners (where float rounding decides which span holds them), and outside
+// the grid. 3 threads, so that cells marked from several threads are seen.
+TEST(air_Classification, LiquidCellsAreThoseTheBoxSearchFinds) {
+  CpuExec exec(3);
+  AirSettings s = test::quiet_air_box(12);  // dx = 1/12, a spacing float does not hold exactly
+  s.domain_min = Vec3{0.3f, -0.7f, 0.1f};   // an origin that the cell bounds round against
+  s.domain_max = s.domain_min + Vec3{1, 1, 1};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-0.05f, 1.05f);
+  std::uniform_int_distribution<int> face(0, 12);
+  std::vector<Vec3> points;
+  for (int n = 0; n < 3000; ++n) points.push_back(s.domain_min + Vec3{u(rng), u(rng), u(rng)});
+  const float dx = 1.0f / 12.0f;
+  for (int n = 0; n < 1500; ++n) {
+    Vec3 p = s.domain_min + Vec3{u(rng), u(rng), u(rng)};
+    p.x = s.domain_min.x + dx * static_cast<float>(face(rng));  // on an x face, as the box test's lo is formed
+    if (n % 2) p.y = s.domain_min.y + dx * static_cast<float>(face(rng)) + dx;  // on a y face, as hi is
+    if (n % 3 == 0) p.z = std::nextafter(s.domain_min.z + dx * static_cast<float>(face(rng)), 0.0f);
+    points.push_back(p);
+  }
+  test::SortedParticles liquid(exec, points, s.domain_min, s.domain_max, 0.04f);
+  AirGrid<CpuExec> air(exec, s, Vec3{0, -9.81f, 0}, test::SortedParticles(exec, {}, s.domain_min, s.domain_max, 0.04f).view());
+  air.classify(exec, liquid.positions());
+  const AirSnapshot a = air.snapshot();
+  const MacGrid& g = a.grid;
+  const GridView view = liquid.view();
+  int liquid_cells = 0;
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const Vec3 lo = g.origin + g.dx * Vec3{static_cast<float>(i), static_cast<float>(j), static_cast<float>(k)};
+        const bool found = any_particle_in_box(view, lo, lo + Vec3{g.dx, g.dx, g.dx});
+        ASSERT_EQ(a.kind[g.cell(i, j, k)], found ? kLiquidCell : kAirCell) << "cell " << i << " " << j << " " << k;
+        liquid_cells += found;
+      }
+  EXPECT_GT(liquid_cells, 1000);
+  EXPECT_LT(liquid_cells, 1728);
 }
 
 // Eq. 11 against the IAPWS-95 saturation pressures of water (0 C: 611.2 Pa,
