@@ -1,7 +1,8 @@
 #pragma once
 // CPU backend: OpenMP threads for per-element kernels, CCCL Thrust (compiled by
 // the host compiler, OpenMP system) for sort and scan. Deterministic: kernels
-// gather and write only their own element, sorts are stable, sums use the
+// gather and write only their own element (or, in MarkLiquidCells, the same
+// value to a shared byte), sorts are stable, sums use the
 // fixed blocked order of blocked_sum.h.
 #include <omp.h>
 #include <thrust/scan.h>
