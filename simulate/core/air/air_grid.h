@@ -241,7 +241,8 @@ class AirGrid {
   void enforce_boundaries(const Exec& exec) {
     for_each_axis([&](auto axis) {
       constexpr int a = decltype(axis)::value;
-      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2), face_enforcement<a>());
+      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
+                           EnforceFaceVelocity<a>{cells(), Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[a])});
     });
   }
 
@@ -256,14 +257,13 @@ class AirGrid {
     if (settings_.vorticity_epsilon > 0) {
       // The finest pressure level's stencil marks each cell's air neighbours
       // (mark_unknowns ran at the start of the step).
-      const std::uint8_t* air = pcg_.preconditioner().view(0).stencil;
+      const PoissonLevel air = pcg_.preconditioner().view(0);
       const DifferenceScales scales = difference_scales(grid_.dx);
-      const CellStrides strides = cell_strides(grid_);
       const std::size_t n = grid_.cell_count();
       exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, CellCentredVelocity{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]),
                                                                              cell_velocity_.ptr()});
-      exec.parallel_for(n, ComputeVorticity{air, strides, scales, cell_velocity_.ptr(), Exec::ptr(omega_), omega_norm_.ptr()});
-      exec.parallel_for(n, ComputeConfinementForce{air, strides, scales, grid_.dx, Exec::ptr(omega_), omega_norm_.ptr(),
+      exec.parallel_for(n, ComputeVorticity{air, scales, cell_velocity_.ptr(), Exec::ptr(omega_), omega_norm_.ptr()});
+      exec.parallel_for(n, ComputeConfinementForce{air, scales, grid_.dx, Exec::ptr(omega_), omega_norm_.ptr(),
                                                    settings_.vorticity_epsilon, Exec::ptr(force_)});
       for_each_axis([&](auto axis) {
         constexpr int a = decltype(axis)::value;
@@ -450,11 +450,6 @@ class AirGrid {
   }
 
  private:
-  template <int Axis>
-  EnforceFaceVelocity<Axis> face_enforcement() {
-    return EnforceFaceVelocity<Axis>{cells(), Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[Axis])};
-  }
-
   // The pressure's unknowns, the air cells, and the stencils over them,
   // from the cells' kinds: once per step, as the kinds change only when the
   // cells are classified.

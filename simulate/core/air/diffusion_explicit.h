@@ -23,8 +23,9 @@ struct DiffuseExplicit {
     const MacGrid& g = cells.grid;
     const std::size_t c = g.cell(i, j, k);
     // The six neighbours in a fixed order, each a select rather than a
-    // branch (adding +0 where no flux passes leaves the sum's bits as they
-    // are), so that g++ vectorises the pass along x rows.
+    // branch per neighbour (adding +0 where no flux passes leaves the sum's
+    // bits as they are). g++ still does not vectorise it; the pass took a
+    // third less time all the same (docs/benchmarks.md).
     const double here = static_cast<double>(in[c]);
     const std::size_t row = static_cast<std::size_t>(g.nx), slab = row * g.ny;
     double sum = 0.0;

@@ -22,11 +22,10 @@ struct CellCentredVelocity {
     grid.cell_coords(c, i, j, k);
     (*this)(i, j, k);
   }
-  DP_HD void operator()(int i, int j, int k) const { out[grid.cell(i, j, k)] = at(i, j, k); }
-  DP_HD_INLINE Vec3 at(int i, int j, int k) const {
-    return Vec3{0.5f * (u[grid.face(0, i, j, k)] + u[grid.face(0, i + 1, j, k)]),
-                0.5f * (v[grid.face(1, i, j, k)] + v[grid.face(1, i, j + 1, k)]),
-                0.5f * (w[grid.face(2, i, j, k)] + w[grid.face(2, i, j, k + 1)])};
+  DP_HD void operator()(int i, int j, int k) const {
+    out[grid.cell(i, j, k)] = Vec3{0.5f * (u[grid.face(0, i, j, k)] + u[grid.face(0, i + 1, j, k)]),
+                  0.5f * (v[grid.face(1, i, j, k)] + v[grid.face(1, i, j + 1, k)]),
+                  0.5f * (w[grid.face(2, i, j, k)] + w[grid.face(2, i, j, k + 1)])};
   }
 };
 
@@ -53,42 +52,38 @@ DP_HD_INLINE T air_derivative(const T* at, std::ptrdiff_t stride, unsigned air, 
   return (hi - lo) * (plus && minus ? scales.two_steps : scales.one_step);
 }
 
-// The index steps along x, y and z of a grid's cells.
-struct CellStrides {
+// The index steps along x, y and z between a level's cells.
+struct CellSteps {
   std::ptrdiff_t axis[3];
+  DP_HD explicit CellSteps(const PoissonLevel& l) : axis{1, l.nx, static_cast<std::ptrdiff_t>(l.slab())} {}
 };
-DP_HD inline CellStrides cell_strides(const MacGrid& g) {
-  const std::ptrdiff_t row = g.nx, slab = row * g.ny;
-  return CellStrides{{1, row, slab}};
-}
 
 // omega = curl u and |omega| at the air cells, 0 elsewhere.
 struct ComputeVorticity {
-  const std::uint8_t* air;  // the pressure stencil's bits (PoissonLevel::stencil)
-  CellStrides strides;
+  PoissonLevel air;  // the finest pressure level: its stencil marks the air neighbours
   DifferenceScales scales;
   const Vec3* velocity;  // cell-centred, padded by a slab
   Vec3* omega;
   float* omega_norm;
   DP_HD void operator()(std::size_t c) const {
-    const unsigned bits = air[c];
+    const unsigned bits = air.stencil[c];
     if (!(bits & PoissonLevel::kStencilUnknown)) {
       omega[c] = Vec3{};
       omega_norm[c] = 0;
       return;
     }
+    const CellSteps steps(air);
     const Vec3* at = velocity + c;
-    const Vec3 dx = air_derivative(at, strides.axis[0], bits, 0, scales);
-    const Vec3 dy = air_derivative(at, strides.axis[1], bits, 1, scales);
-    const Vec3 dz = air_derivative(at, strides.axis[2], bits, 2, scales);
+    const Vec3 dx = air_derivative(at, steps.axis[0], bits, 0, scales);
+    const Vec3 dy = air_derivative(at, steps.axis[1], bits, 1, scales);
+    const Vec3 dz = air_derivative(at, steps.axis[2], bits, 2, scales);
     omega[c] = Vec3{dy.z - dz.y, dz.x - dx.z, dx.y - dy.x};
     omega_norm[c] = length(omega[c]);
   }
 };
 
 struct ComputeConfinementForce {
-  const std::uint8_t* air;  // as in ComputeVorticity
-  CellStrides strides;
+  PoissonLevel air;  // as in ComputeVorticity
   DifferenceScales scales;
   float dx;
   const Vec3* omega;
@@ -97,11 +92,12 @@ struct ComputeConfinementForce {
   Vec3* force;
   DP_HD void operator()(std::size_t c) const {
     force[c] = Vec3{};
-    const unsigned bits = air[c];
+    const unsigned bits = air.stencil[c];
     if (!(bits & PoissonLevel::kStencilUnknown)) return;
+    const CellSteps steps(air);
     const float* at = omega_norm + c;
-    const Vec3 grad{air_derivative(at, strides.axis[0], bits, 0, scales), air_derivative(at, strides.axis[1], bits, 1, scales),
-                    air_derivative(at, strides.axis[2], bits, 2, scales)};
+    const Vec3 grad{air_derivative(at, steps.axis[0], bits, 0, scales), air_derivative(at, steps.axis[1], bits, 1, scales),
+                    air_derivative(at, steps.axis[2], bits, 2, scales)};
     const float g = length(grad);
     // A flat |omega| has no direction to confine towards.
     if (!(g > 1e-20f)) return;
