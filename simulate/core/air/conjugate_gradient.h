@@ -77,11 +77,15 @@ struct StepIterateAndResidual {
   const float* q;
   float* x;
   float* r;
+  // Selects, not an early return, and the quotient taken whether it is used
+  // or not (g++ will not move a division out of a branch): so the CPU's
+  // loop vectorises. A quotient that is not used may be inf or NaN.
   DP_HD void operator()(std::size_t i) const {
-    if (p.stopped() || !(p.s[PcgScalars::kDq] > 0.0)) return;
+    const bool steps = !p.stopped() & (p.s[PcgScalars::kDq] > 0.0);
     const float alpha = static_cast<float>(p.s[PcgScalars::kRho] / p.s[PcgScalars::kDq]);
-    x[i] += alpha * d[i];
-    r[i] += -alpha * q[i];
+    const float xi = x[i], ri = r[i];
+    x[i] = steps ? xi + alpha * d[i] : xi;
+    r[i] = steps ? ri + -alpha * q[i] : ri;
   }
 };
 

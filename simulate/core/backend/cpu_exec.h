@@ -36,7 +36,7 @@ struct TakesFourAlongX<F, std::void_t<decltype(std::declval<const F&>().four_alo
 // rows begin .. end - 1 of a box, or blocks begin .. end - 1 of a sum.
 template <class F>
 struct ElementLoop {
-  F f;  // a copy: no store of the loop can change the functor's pointers, so g++ vectorises it
+  F f;  // by value, run from a local copy (CpuExec::run_local)
   std::size_t begin, end;
   DP_HD_INLINE void operator()() const {
     for (std::size_t i = begin; i < end; ++i) f(i);
@@ -254,14 +254,24 @@ class CpuExec {
       return;
     }
 #endif
-    loop();
+    run_local(loop);
   }
 #if DP_CPU_HAS_AVX2_COPY
   template <class Loop>
   DP_AVX2_COPY static void run_avx2(const Loop& loop) {
-    loop();
+    run_local(loop);
   }
 #endif
+  // The loop runs from a copy in this frame, whose address nothing else
+  // holds: then g++ knows that no store of the loop changes the functor's
+  // pointers and scalars. Run through the caller's reference, it reloaded
+  // them every element and, in the AVX2 copy, left many loops scalar (the
+  // CG's vector updates, diffusion, forces; docs/benchmarks.md).
+  template <class Loop>
+  DP_HOST_INLINE static void run_local(const Loop& loop) {
+    const Loop local = loop;
+    local();
+  }
 
   int threads_;
   CpuIsa isa_;
