@@ -170,6 +170,8 @@ class AirGrid {
       u_tmp_[a].resize(grid_.face_count(a));
       u_back_[a].resize(grid_.face_count(a));
       vapor_flux_[a].resize(grid_.face_count(a));
+      face_prescribed_[a].resize(grid_.face_count(a));
+      face_value_[a].resize(grid_.face_count(a));
       exec.parallel_for(u_[a].size(), FillValue::Into<float>{0.0f, Exec::ptr(u_[a])});
     }
     Exec::upload(inflows_, settings.inflows);
@@ -238,40 +240,22 @@ class AirGrid {
                                             Exec::ptr(vapor_), Exec::ptr(temperature_excess_)});
   }
 
+  // Every face that is not free takes its prescribed velocity; which faces
+  // those are is recorded for reapply_boundaries.
   void enforce_boundaries(const Exec& exec) {
     for_each_axis([&](auto axis) {
       constexpr int a = decltype(axis)::value;
       exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
-                           EnforceFaceVelocity<a>{cells(), Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[a])});
+                           EnforceFaceVelocity<a>{cells(), Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[a]),
+                                                  Exec::ptr(face_prescribed_[a]), Exec::ptr(face_value_[a])});
     });
   }
 
-  // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt.
-  void add_forces(const Exec& exec, float dt) {
-    for_each_axis([&](auto axis) {
-      constexpr int a = decltype(axis)::value;
-      if (buoyancy_.up[a] == 0.0f) return;  // no pass over faces the kernel leaves alone
-      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
-                           AddBuoyancy<a>{grid_, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt, Exec::ptr(u_[a])});
-    });
-    if (settings_.vorticity_epsilon > 0) {
-      // The finest pressure level's stencil marks each cell's air neighbours
-      // (mark_unknowns ran at the start of the step).
-      const PoissonLevel air = pcg_.preconditioner().view(0);
-      const DifferenceScales scales = difference_scales(grid_.dx);
-      const std::size_t n = grid_.cell_count();
-      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, CellCentredVelocity{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]),
-                                                                             cell_velocity_.ptr()});
-      exec.parallel_for(n, ComputeVorticity{air, scales, cell_velocity_.ptr(), Exec::ptr(omega_), omega_norm_.ptr()});
-      exec.parallel_for(n, ComputeConfinementForce{air, scales, grid_.dx, Exec::ptr(omega_), omega_norm_.ptr(),
-                                                   settings_.vorticity_epsilon, Exec::ptr(force_)});
-      for_each_axis([&](auto axis) {
-        constexpr int a = decltype(axis)::value;
-        exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
-                             AddCellForceToFaces<a>{grid_, Exec::ptr(force_), dt, Exec::ptr(u_[a])});
-      });
-    }
-    enforce_boundaries(exec);
+  // enforce_boundaries again within a step, whose cells do not change.
+  void reapply_boundaries(const Exec& exec) {
+    for (int a = 0; a < 3; ++a)
+      exec.parallel_for(u_[a].size(), ReapplyPrescribedFaces{Exec::ptr(face_prescribed_[a]), Exec::ptr(face_value_[a]),
+                                                             Exec::ptr(u_[a])});
   }
 
   // Conservative vapor transport, sub-stepped so that no cell's outflow
@@ -308,16 +292,6 @@ class AirGrid {
     advect_field<kCellCentres>(exec, cell_lattice(grid_, Exec::ptr(temperature_excess_)), vel, dt, temperature_tmp_,
                                temperature_back_);
     temperature_excess_.swap(temperature_tmp_);
-  }
-
-  // Every component is advected by the velocity at the start of the call.
-  void advect_velocity(const Exec& exec, float dt) {
-    const FaceVelocity vel = face_velocity(grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]));
-    advect_field<0>(exec, vel.u, vel, dt, u_tmp_[0], u_back_[0]);
-    advect_field<1>(exec, vel.v, vel, dt, u_tmp_[1], u_back_[1]);
-    advect_field<2>(exec, vel.w, vel, dt, u_tmp_[2], u_back_[2]);
-    for (int a = 0; a < 3; ++a) u_[a].swap(u_tmp_[a]);
-    enforce_boundaries(exec);
   }
 
   // Explicit diffusion of heat and vapor; returns the sub-steps taken.
@@ -450,6 +424,46 @@ class AirGrid {
   }
 
  private:
+  // add_forces and advect_velocity run within step() only: they reapply the
+  // face verdicts that enforce_boundaries recorded at the step's start.
+  // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt.
+  void add_forces(const Exec& exec, float dt) {
+    for_each_axis([&](auto axis) {
+      constexpr int a = decltype(axis)::value;
+      if (buoyancy_.up[a] == 0.0f) return;  // no pass over faces the kernel leaves alone
+      exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
+                           AddBuoyancy<a>{grid_, buoyancy_, Exec::ptr(vapor_), Exec::ptr(temperature_excess_), dt, Exec::ptr(u_[a])});
+    });
+    if (settings_.vorticity_epsilon > 0) {
+      // The finest pressure level's stencil marks each cell's air neighbours
+      // (mark_unknowns ran at the start of the step).
+      const PoissonLevel air = pcg_.preconditioner().view(0);
+      const DifferenceScales scales = difference_scales(grid_.dx);
+      const std::size_t n = grid_.cell_count();
+      exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, CellCentredVelocity{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]),
+                                                                             cell_velocity_.ptr()});
+      exec.parallel_for(n, ComputeVorticity{air, scales, cell_velocity_.ptr(), Exec::ptr(omega_), omega_norm_.ptr()});
+      exec.parallel_for(n, ComputeConfinementForce{air, scales, grid_.dx, Exec::ptr(omega_), omega_norm_.ptr(),
+                                                   settings_.vorticity_epsilon, Exec::ptr(force_)});
+      for_each_axis([&](auto axis) {
+        constexpr int a = decltype(axis)::value;
+        exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
+                             AddCellForceToFaces<a>{grid_, Exec::ptr(force_), dt, Exec::ptr(u_[a])});
+      });
+    }
+    reapply_boundaries(exec);
+  }
+
+  // Every component is advected by the velocity at the start of the call.
+  void advect_velocity(const Exec& exec, float dt) {
+    const FaceVelocity vel = face_velocity(grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2]));
+    advect_field<0>(exec, vel.u, vel, dt, u_tmp_[0], u_back_[0]);
+    advect_field<1>(exec, vel.v, vel, dt, u_tmp_[1], u_back_[1]);
+    advect_field<2>(exec, vel.w, vel, dt, u_tmp_[2], u_back_[2]);
+    for (int a = 0; a < 3; ++a) u_[a].swap(u_tmp_[a]);
+    reapply_boundaries(exec);
+  }
+
   // The pressure's unknowns, the air cells, and the stencils over them,
   // from the cells' kinds: once per step, as the kinds change only when the
   // cells are classified.
@@ -496,6 +510,9 @@ class AirGrid {
   Buffer<AirInflow> inflows_;
   Buffer<std::uint8_t> kind_, static_kind_, inflow_of_, unknown_;
   Buffer<float> u_[3], u_tmp_[3], u_back_[3];
+  // Per face, from the last enforce_boundaries: 1 where prescribed, and the value.
+  Buffer<std::uint8_t> face_prescribed_[3];
+  Buffer<float> face_value_[3];
   Buffer<float> temperature_excess_, temperature_tmp_, temperature_back_, phi_, rhs_;
   PaddedField<Exec, float> omega_norm_;  // read by the vorticity stencil
   PaddedField<Exec, Vec3> cell_velocity_;
