@@ -424,9 +424,9 @@ class AirGrid {
   }
 
  private:
-  // add_forces and advect_velocity run within step() only: they reapply the
-  // face verdicts that enforce_boundaries recorded at the step's start.
-  // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt.
+  // Buoyancy (Eq. 5) and vorticity confinement, explicit over dt. Within
+  // step() only, as advect_velocity: both reapply the face verdicts that
+  // enforce_boundaries recorded at the step's start.
   void add_forces(const Exec& exec, float dt) {
     for_each_axis([&](auto axis) {
       constexpr int a = decltype(axis)::value;
