@@ -265,8 +265,8 @@ class CpuExec {
   // The loop runs from a copy in this frame, whose address nothing else
   // holds: then g++ knows that no store of the loop changes the functor's
   // pointers and scalars. Run through the caller's reference, it reloaded
-  // them every element and, in the AVX2 copy, left many loops scalar (the
-  // CG's vector updates, diffusion, forces; docs/benchmarks.md).
+  // them every element and, in the AVX2 copy, left loops scalar (the CG's
+  // vector updates, buoyancy; docs/benchmarks.md).
   template <class Loop>
   DP_HOST_INLINE static void run_local(const Loop& loop) {
     const Loop local = loop;
