@@ -9,6 +9,7 @@
 // open faces (heat and vapor exchange with particles is the coupling's,
 // paper Sec. 5-6).
 #include "air/cell_kind.h"
+#include "math/keep_if.h"
 
 namespace dp {
 
@@ -21,29 +22,65 @@ struct DiffuseExplicit {
 
   DP_HD void operator()(int i, int j, int k) const {
     const MacGrid& g = cells.grid;
-    const std::size_t c = g.cell(i, j, k);
-    // The six neighbours in a fixed order, each a select rather than a
-    // branch per neighbour (adding +0 where no flux passes leaves the sum's
-    // bits as they are). g++ still does not vectorise it; the pass took a
-    // third less time all the same (docs/benchmarks.md).
-    const double here = static_cast<double>(in[c]);
-    const std::size_t row = static_cast<std::size_t>(g.nx), slab = row * g.ny;
-    double sum = 0.0;
-    sum += exchange(i > 0, c, c - 1, here);
-    sum += exchange(i + 1 < g.nx, c, c + 1, here);
-    sum += exchange(j > 0, c, c - row, here);
-    sum += exchange(j + 1 < g.ny, c, c + row, here);
-    sum += exchange(k > 0, c, c - slab, here);
-    sum += exchange(k + 1 < g.nz, c, c + slab, here);
-    out[c] = carries_air(cells.kind[c]) ? static_cast<T>(here + rate * sum) : in[c];
+    out[g.cell(i, j, k)] = diffused(in, cells.kind, i, j, k, Neighbours{i > 0, i + 1 < g.nx, j > 0, j + 1 < g.ny, k > 0, k + 1 < g.nz});
   }
 
+#if !defined(__CUDA_ARCH__)
+  // Cells (0 .. n - 1, j, k), as operator() gives them, for the CPU
+  // launcher (CpuExec::parallel_for_3d): which neighbours lie inside is
+  // decided once for the row's inner cells, whose loop then has no branch
+  // and vectorises. Decided per cell, it kept the loop scalar.
+  DP_HOST_INLINE void whole_row(int n, int j, int k) const { diffuse_row(in, cells.kind, out, n, j, k); }
+#endif
+
  private:
-  // phi_n - phi_c where neighbour n lies inside and carries air, else 0;
-  // outside, c itself is read in n's place, so every read is in bounds.
-  DP_HD_INLINE double exchange(bool inside, std::size_t c, std::size_t n, double here) const {
-    const std::size_t at = inside ? n : c;
-    return inside && carries_air(cells.kind[at]) ? static_cast<double>(in[at]) - here : 0.0;
+#if !defined(__CUDA_ARCH__)
+  // The row with the fields as restrict pointers: out is neither of the
+  // others, which g++ would otherwise check at run time, one pair of
+  // pointers per read, more pairs than it checks before it gives up.
+  DP_HOST_INLINE void diffuse_row(const T* __restrict src, const std::uint8_t* __restrict kind, T* __restrict dst, int n,
+                                  int j, int k) const {
+    const MacGrid& g = cells.grid;
+    Neighbours inside{false, n > 1, j > 0, j + 1 < g.ny, k > 0, k + 1 < g.nz};
+    const std::size_t first = g.cell(0, j, k);
+    dst[first] = diffused(src, kind, 0, j, k, inside);
+    inside.x_low = true;
+    for (int i = 1; i < n - 1; ++i) dst[first + i] = diffused(src, kind, i, j, k, inside);
+    inside.x_high = false;
+    if (n > 1) dst[first + n - 1] = diffused(src, kind, n - 1, j, k, inside);
+  }
+#endif
+
+  // Which of a cell's six neighbours lie inside the grid.
+  struct Neighbours {
+    bool x_low, x_high, y_low, y_high, z_low, z_high;
+  };
+
+  DP_HD_INLINE T diffused(const T* src, const std::uint8_t* kind, int i, int j, int k, const Neighbours& inside) const {
+    const MacGrid& g = cells.grid;
+    const std::size_t c = g.cell(i, j, k);
+    // The six neighbours in a fixed order (adding +0 where no flux passes
+    // leaves the sum's bits as they are), every one read and selected
+    // without a branch, so that a row of cells vectorises.
+    const double here = static_cast<double>(src[c]);
+    const std::ptrdiff_t row = g.nx, slab = row * g.ny;
+    double sum = 0.0;
+    sum += exchange(src, kind, inside.x_low, c, -1, here);
+    sum += exchange(src, kind, inside.x_high, c, 1, here);
+    sum += exchange(src, kind, inside.y_low, c, -row, here);
+    sum += exchange(src, kind, inside.y_high, c, row, here);
+    sum += exchange(src, kind, inside.z_low, c, -slab, here);
+    sum += exchange(src, kind, inside.z_high, c, slab, here);
+    return pick_if(carries_air(kind[c]), static_cast<T>(here + rate * sum), src[c]);
+  }
+
+  // phi_n - phi_c where neighbour c + offset lies inside and carries air,
+  // else +0; outside, c itself is read in its place, so every read is in
+  // bounds.
+  DP_HD_INLINE static double exchange(const T* src, const std::uint8_t* kind, bool inside, std::size_t c, std::ptrdiff_t offset,
+                                      double here) {
+    const std::size_t at = c + (inside ? offset : 0);
+    return keep_if(static_cast<double>(src[at]) - here, inside & carries_air(kind[at]));
   }
 };
 

@@ -12,25 +12,10 @@
 
 #include "air/cell_kind.h"
 #include "air/padded_field.h"
+#include "math/keep_if.h"
 #include "backend/host_device.h"
 
 namespace dp {
-
-// v where `bit` (0 or 1) is set, +0 where not: an integer and on v's bits,
-// no floating-point operation, so the compiler may compute v for every cell
-// and select without branching (and vectorise).
-DP_HD_INLINE float keep_if(float v, unsigned bit) {
-#if defined(__CUDA_ARCH__)
-  return __uint_as_float(__float_as_uint(v) & (0u - bit));
-#else
-  std::uint32_t u;
-  std::memcpy(&u, &v, sizeof u);
-  u &= 0u - bit;
-  float kept;
-  std::memcpy(&kept, &u, sizeof kept);
-  return kept;
-#endif
-}
 
 struct PoissonLevel {
   int nx, ny, nz;

@@ -11,10 +11,17 @@
 // sub-steps to stay there).
 #include "air/boundary_conditions.h"
 #include "air/cell_kind.h"
+#include "math/keep_if.h"
 
 namespace dp {
 
-DP_HD_INLINE double minmod(double a, double b) { return a * b <= 0.0 ? 0.0 : (fabs(a) < fabs(b) ? a : b); }
+// Both comparisons are made whatever the first one says: g++ moves no
+// floating-point operation (which may trap) out from under a condition, so
+// a conditional one keeps a branch in the loop and the loop scalar.
+DP_HD_INLINE double minmod(double a, double b) {
+  const bool opposite = a * b <= 0.0, a_smaller = fabs(a) < fabs(b);
+  return opposite ? 0.0 : (a_smaller ? a : b);
+}
 
 // The change of vapor density (kg/m^3) a face moves from its low to its high
 // cell in one sub-step of length dt: c rho_face, c = u dt / dx. Faces next to
@@ -29,39 +36,83 @@ struct VaporFaceFlux {
   // Face (i, j, k) of axis Axis; a compile-time axis folds the index
   // arithmetic and the axis selects of every face.
   template <int Axis>
-  DP_HD double along(const float* u, int i, int j, int k) const {
-    constexpr int axis = Axis;
+  DP_HD_INLINE double along(const float* u, int i, int j, int k) const {
     const MacGrid& g = cells.grid;
-    const FaceSides s = face_sides(g, axis, i, j, k);
-    const std::size_t f = g.face(axis, i, j, k);
-    const double c = static_cast<double>(u[f]) * dt / g.dx;
-    if (c == 0.0) return 0.0;
-    if (!(s.lo && s.hi)) {
-      const std::size_t inner = s.lo ? s.cell_lo : s.cell_hi;
-      if (!cells.faces.open(axis, s.lo ? 1 : 0) || !carries_air(cells.kind[inner])) return 0.0;
-      const bool leaving = s.lo ? c > 0 : c < 0;
-      return c * (leaving ? vapor[inner] : ambient_vapor);
+    const FaceSides s = face_sides(g, Axis, i, j, k);
+    const double c = courant(u, g.face(Axis, i, j, k));
+    if (!(s.lo && s.hi)) return on_domain_face(Axis, s, c);
+    const int a = Axis == 0 ? i : (Axis == 1 ? j : k);
+    return between_cells<Axis>(i, j, k, c, a >= 2, a + 1 < g.n(Axis));
+  }
+
+#if !defined(__CUDA_ARCH__)
+  // The faces (0 .. n - 1, j, k) of axis Axis into out, as along() gives
+  // them, for the CPU launcher (CpuExec::parallel_for_3d): whether a face
+  // lies on the domain and which of its neighbours lie inside is decided
+  // once for the row's inner faces, whose loop then has no branch and
+  // vectorises. Decided per face, it kept the loop scalar.
+  template <int Axis>
+  DP_HOST_INLINE void row(const float* u, double* out, int n, int j, int k) const {
+    const MacGrid& g = cells.grid;
+    const std::size_t first = g.face(Axis, 0, j, k);
+    int inner_begin = 0, inner_end = n;
+    bool below_inside = true, above_inside = true;
+    if constexpr (Axis == 0) {  // faces 0, 1, nx - 1 and nx are not inner ones
+      inner_begin = n < 2 ? n : 2;
+      inner_end = n - 2 > inner_begin ? n - 2 : inner_begin;
+    } else {
+      const int a = Axis == 1 ? j : k;
+      if (a == 0 || a == g.n(Axis)) inner_end = 0;
+      below_inside = a >= 2;
+      above_inside = a + 1 < g.n(Axis);
     }
-    // Between two cells: written with selects rather than branches (the
-    // flow's direction and the limiter's cases change from face to face, and
-    // mispredicted branches were most of this pass's time); the values are
-    // those of the branching form for finite vapor.
-    const bool carries = carries_air(cells.kind[s.cell_lo]) && carries_air(cells.kind[s.cell_hi]);
+    for (int i = 0; i < inner_begin; ++i) out[first + i] = along<Axis>(u, i, j, k);
+    for (int i = inner_begin; i < inner_end; ++i)
+      out[first + i] = between_cells<Axis>(i, j, k, courant(u, first + i), below_inside, above_inside);
+    for (int i = inner_end; i < n; ++i) out[first + i] = along<Axis>(u, i, j, k);
+  }
+#endif
+
+ private:
+  // u dt / dx at face f of u's lattice.
+  DP_HD_INLINE double courant(const float* u, std::size_t f) const { return static_cast<double>(u[f]) * dt / cells.grid.dx; }
+
+  // A face on the domain's boundary: an open one lets its cell's vapor out
+  // and the ambient vapor in.
+  DP_HD_INLINE double on_domain_face(int axis, const FaceSides& s, double c) const {
+    const std::size_t inner = s.lo ? s.cell_lo : s.cell_hi;
+    if (c == 0.0 || !cells.faces.open(axis, s.lo ? 1 : 0) || !carries_air(cells.kind[inner])) return 0.0;
+    const bool leaving = s.lo ? c > 0 : c < 0;
+    return c * (leaving ? vapor[inner] : ambient_vapor);
+  }
+
+  // Face (i, j, k) between two cells, a along Axis; whether cells a - 2
+  // and a + 1 lie inside is given. Every value is read and computed for
+  // both directions of flow and the result selected, with no branch: the
+  // direction and the limiter's cases change from face to face
+  // (mispredicted branches were most of this pass's time), and g++
+  // vectorises a row of such faces (row()). The selected values are those
+  // of the branching form for finite vapor.
+  template <int Axis>
+  DP_HD_INLINE double between_cells(int i, int j, int k, double c, bool below_inside, bool above_inside) const {
+    const MacGrid& g = cells.grid;
+    const std::ptrdiff_t stride = Axis == 0 ? 1 : (Axis == 1 ? static_cast<std::ptrdiff_t>(g.nx) : static_cast<std::ptrdiff_t>(g.nx) * g.ny);
+    const std::size_t hi = g.cell(i, j, k), lo = hi - stride;
+    // The cell behind the upwind one limits the slope if it lies inside and
+    // carries air: cell a - 2 for forward flow, a + 1 for backward. Outside,
+    // the upwind cell stands in for it, read but not used.
+    const std::size_t below = lo - (below_inside ? stride : 0), above = hi + (above_inside ? stride : 0);
+    const double v_below = vapor[below], v_lo = vapor[lo], v_hi = vapor[hi], v_above = vapor[above];
+    const bool air_below = carries_air(cells.kind[below]), air_lo = carries_air(cells.kind[lo]),
+               air_hi = carries_air(cells.kind[hi]), air_above = carries_air(cells.kind[above]);
+    const bool carries = air_lo & air_hi;
     const bool forward = c > 0;
-    const std::size_t up = forward ? s.cell_lo : s.cell_hi, down = forward ? s.cell_hi : s.cell_lo;
-    // The cell behind the upwind one (face a is the low face of cell a:
-    // cell a - 2 for forward flow, a + 1 for backward), if it lies inside and
-    // carries air, limits the slope; elsewhere the upwind cell stands in for
-    // it, read but not used.
-    const int a = axis == 0 ? i : (axis == 1 ? j : k);
-    const std::ptrdiff_t stride = axis == 0 ? 1 : (axis == 1 ? static_cast<std::ptrdiff_t>(g.nx) : static_cast<std::ptrdiff_t>(g.nx) * g.ny);
-    const bool behind_inside = forward ? a >= 2 : a + 1 < g.n(axis);
-    const std::size_t behind = behind_inside ? (forward ? s.cell_lo - stride : s.cell_hi + stride) : up;
-    const bool limits = behind_inside && carries_air(cells.kind[behind]);
-    const double rise = vapor[up] - vapor[behind], fall = vapor[down] - vapor[up];
-    const double slope = limits ? minmod(rise, fall) : 0.0;
-    const double flux = c * (vapor[up] + 0.5 * (1.0 - fabs(c)) * slope);
-    return carries ? flux : 0.0;
+    const double up = forward ? v_lo : v_hi, down = forward ? v_hi : v_lo, behind = forward ? v_below : v_above;
+    const bool limits = forward ? below_inside & air_below : above_inside & air_above;
+    const double rise = up - behind, fall = down - up;
+    const double slope = keep_if(minmod(rise, fall), limits);
+    const double flux = c * (up + 0.5 * (1.0 - fabs(c)) * slope);
+    return keep_if(flux, carries & (c != 0.0));
   }
 };
 
@@ -109,6 +160,9 @@ struct ComputeVaporFlux {
   DP_HD void operator()(int i, int j, int k) const {
     out[flux.cells.grid.face(Axis, i, j, k)] = flux.template along<Axis>(u, i, j, k);
   }
+#if !defined(__CUDA_ARCH__)
+  DP_HOST_INLINE void whole_row(int n, int j, int k) const { flux.template row<Axis>(u, out, n, j, k); }
+#endif
 };
 
 // rho_c += sum of fluxes in - fluxes out, over its six faces (gather).

@@ -31,6 +31,14 @@ struct TakesFourAlongX<F, std::void_t<decltype(std::declval<const F&>().four_alo
                                       decltype(static_cast<bool>(std::declval<const F&>().lanes_fit()))>>
     : std::true_type {};
 
+// Whether functor F offers whole_row(nx, j, k), for points 0 .. nx - 1 of
+// row (j, k) at once: a functor whose per-point branches are the same along
+// a row decides them once there, and its inner loop vectorises.
+template <class F, class = void>
+struct TakesWholeRows : std::false_type {};
+template <class F>
+struct TakesWholeRows<F, std::void_t<decltype(std::declval<const F&>().whole_row(0, 0, 0))>> : std::true_type {};
+
 // The launcher's loops over a range, each one a functor whose call inlines
 // into both copies (CpuExec::run): elements begin .. end - 1 of a 1-D pass,
 // rows begin .. end - 1 of a box, or blocks begin .. end - 1 of a sum.
@@ -52,6 +60,10 @@ struct RowLoop {
   DP_HD_INLINE void operator()() const {
     for (std::int64_t r = begin; r < end; ++r) {
       const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
+      if constexpr (TakesWholeRows<F>::value) {
+        f.whole_row(nx, j, k);
+        continue;
+      }
       int i = 0;
       if constexpr (TakesFourAlongX<F>::value) {
         if (four) {
@@ -132,7 +144,8 @@ class CpuExec {
   // whole x rows, so a functor is handed its coordinates without dividing a
   // linear index and its inner loop runs along contiguous memory.
   // A functor with four_along_x(i, j, k) (and lanes_fit() true) is handed
-  // four points of a row at a time (sample_lanes.h), the rest one by one.
+  // four points of a row at a time (sample_lanes.h), the rest one by one;
+  // one with whole_row(nx, j, k) whole rows.
   template <class F>
   void parallel_for_3d(int nx, int ny, int nz, const F& f) const {
     const std::int64_t rows = static_cast<std::int64_t>(ny) * nz;

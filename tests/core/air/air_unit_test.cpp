@@ -269,6 +269,106 @@ TEST(air_Advection, FourLanesEqualOneLaneBitForBit) {
   }
 }
 
+// The CPU launcher hands the vapor flux whole rows (ComputeVaporFlux::
+// whole_row), which decide once per row what lies on the domain and which
+// neighbours lie inside; against the face-by-face flux, bit for bit, in
+// both of the launcher's copies: grids down to one cell per axis (rows with
+// no inner faces), every kind of cell, random open faces, flow both ways
+// with faces at 0 and -0, and equal neighbours (the limiter's zero slope).
+TEST(air_VaporTransport, FluxRowsEqualFaceByFaceBitForBit) {
+  std::mt19937 rng(83);
+  std::uniform_real_distribution<float> speed(-3.0f, 3.0f), unit(0.0f, 1.0f);
+  const int sizes[][3] = {{1, 3, 2}, {2, 2, 3}, {3, 4, 1}, {4, 3, 3}, {5, 1, 4}, {9, 6, 5}};
+  int compared = 0;
+  for (const auto& n : sizes) {
+    MacGrid g;
+    g.dx = 0.1f;
+    g.nx = n[0];
+    g.ny = n[1];
+    g.nz = n[2];
+    std::vector<double> vapor(g.cell_count());
+    for (std::size_t c = 0; c < vapor.size(); ++c) vapor[c] = c % 5 == 0 && c > 0 ? vapor[c - 1] : 0.03 * unit(rng);
+    std::vector<std::uint8_t> kind(g.cell_count());
+    for (auto& k : kind) {
+      const float x = unit(rng);
+      k = x < 0.7f ? kAirCell : (x < 0.8f ? kInflowCell : (x < 0.9f ? kSolidCell : kLiquidCell));
+    }
+    DomainFaces faces;
+    faces.open_mask = static_cast<unsigned>(rng()) & 0x3fu;
+    const VaporFaceFlux flux{CellKinds{g, kind.data(), faces}, vapor.data(), 0.011, 0.02f};
+    const auto face_by_face_equals_rows = [&](auto axis) {
+      constexpr int a = decltype(axis)::value;
+      std::vector<float> u(g.face_count(a));
+      for (std::size_t f = 0; f < u.size(); ++f) u[f] = f % 7 == 0 ? 0.0f : (f % 11 == 0 ? -0.0f : speed(rng));
+      std::vector<double> one(u.size(), -1.0);
+      const ComputeVaporFlux<a> by_face{flux, u.data(), one.data()};
+      for (int k = 0; k < g.face_n(a, 2); ++k)
+        for (int j = 0; j < g.face_n(a, 1); ++j)
+          for (int i = 0; i < g.face_n(a, 0); ++i) by_face(i, j, k);
+      for (const CpuIsa isa : {CpuIsa::Baseline, CpuIsa::Avx2}) {
+        if (isa == CpuIsa::Avx2 && !cpu_runs_avx2_copy()) continue;
+        std::vector<double> rows(u.size(), -1.0);
+        CpuExec(1, isa).parallel_for_3d(g.face_n(a, 0), g.face_n(a, 1), g.face_n(a, 2),
+                                        ComputeVaporFlux<a>{flux, u.data(), rows.data()});
+        for (std::size_t f = 0; f < u.size(); ++f)
+          ASSERT_EQ(std::memcmp(&one[f], &rows[f], sizeof(double)), 0)
+              << "axis " << a << " (" << cpu_isa_name(isa) << "), grid " << g.nx << "x" << g.ny << "x" << g.nz << ", face "
+              << f << ": " << one[f] << " vs " << rows[f];
+        ++compared;
+      }
+    };
+    static_assert(TakesWholeRows<ComputeVaporFlux<0>>::value, "the CPU launcher must find the rows");
+    face_by_face_equals_rows(std::integral_constant<int, 0>{});
+    face_by_face_equals_rows(std::integral_constant<int, 1>{});
+    face_by_face_equals_rows(std::integral_constant<int, 2>{});
+  }
+  EXPECT_GE(compared, 18);
+}
+
+// Diffusion in whole rows (DiffuseExplicit::whole_row), as the CPU launcher
+// runs it in both copies, against cell by cell, bit for bit, for float
+// (temperature) and double (vapor): grids down to one cell per axis, every
+// kind of cell, negative values and -0.
+template <class T>
+void expect_diffusion_rows_equal_cell_by_cell(std::mt19937& rng) {
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f), value(-2.0f, 2.0f);
+  const int sizes[][3] = {{1, 1, 1}, {1, 3, 2}, {2, 2, 3}, {3, 4, 1}, {7, 5, 4}};
+  for (const auto& n : sizes) {
+    MacGrid g;
+    g.nx = n[0];
+    g.ny = n[1];
+    g.nz = n[2];
+    std::vector<T> in(g.cell_count());
+    for (std::size_t c = 0; c < in.size(); ++c) in[c] = c % 9 == 4 ? T(-0.0) : static_cast<T>(value(rng));
+    std::vector<std::uint8_t> kind(g.cell_count());
+    for (auto& k : kind) {
+      const float x = unit(rng);
+      k = x < 0.7f ? kAirCell : (x < 0.8f ? kInflowCell : (x < 0.9f ? kSolidCell : kLiquidCell));
+    }
+    const CellKinds cells{g, kind.data(), DomainFaces{}};
+    std::vector<T> one(in.size());
+    const DiffuseExplicit<T> by_cell{cells, in.data(), 0.15, one.data()};
+    for (int k = 0; k < g.nz; ++k)
+      for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i) by_cell(i, j, k);
+    for (const CpuIsa isa : {CpuIsa::Baseline, CpuIsa::Avx2}) {
+      if (isa == CpuIsa::Avx2 && !cpu_runs_avx2_copy()) continue;
+      std::vector<T> rows(in.size());
+      CpuExec(1, isa).parallel_for_3d(g.nx, g.ny, g.nz, DiffuseExplicit<T>{cells, in.data(), 0.15, rows.data()});
+      for (std::size_t c = 0; c < in.size(); ++c)
+        ASSERT_EQ(std::memcmp(&one[c], &rows[c], sizeof(T)), 0) << sizeof(T) << "-byte values (" << cpu_isa_name(isa) << "), grid "
+                                                                 << g.nx << "x" << g.ny << "x" << g.nz << ", cell " << c;
+    }
+  }
+}
+
+TEST(air_Diffusion, RowsEqualCellByCellBitForBit) {
+  static_assert(TakesWholeRows<DiffuseExplicit<float>>::value, "the CPU launcher must find the rows");
+  std::mt19937 rng(97);
+  expect_diffusion_rows_equal_cell_by_cell<float>(rng);
+  expect_diffusion_rows_equal_cell_by_cell<double>(rng);
+}
+
 // CG needs a symmetric positive definite preconditioner: y.M x = x.M y and
 // x.M x > 0 for random x, y, on a grid with obstacles and an open face.
 TEST(air_Multigrid, VCycleIsSymmetricPositiveDefinite) {
