@@ -7,6 +7,7 @@
 #include "air/cell_kind.h"
 #include "air/mac_grid.h"
 #include "air/poisson_level.h"
+#include "math/keep_if.h"
 
 namespace dp {
 
@@ -43,13 +44,23 @@ DP_HD inline DifferenceScales difference_scales(float dx) { return DifferenceSca
 // them (PoissonLevel::stencil: bit 2 axis + side, the unknowns being the
 // air cells). Both neighbours are loaded and the bits select, without a
 // branch; the values are those of the branching form.
-template <class T>
-DP_HD_INLINE T air_derivative(const T* at, std::ptrdiff_t stride, unsigned air, int axis, DifferenceScales scales) {
-  const bool minus = (air >> (2 * axis)) & 1u, plus = (air >> (2 * axis + 1)) & 1u;
-  const T here = at[0], above = at[stride], below = at[-stride];
-  const T hi = plus ? above : here;
-  const T lo = minus ? below : here;
-  return (hi - lo) * (plus && minus ? scales.two_steps : scales.one_step);
+// The selects are made on the bits (pick_if): as plain selects, g++ split
+// the cell's cases into branches, one subtraction in each, which kept the
+// loop scalar.
+DP_HD_INLINE float air_derivative(const float* at, std::ptrdiff_t stride, unsigned air, int axis, DifferenceScales scales) {
+  const unsigned minus = (air >> (2 * axis)) & 1u, plus = (air >> (2 * axis + 1)) & 1u;
+  const float here = at[0], above = at[stride], below = at[-stride];
+  return (pick_if(plus, above, here) - pick_if(minus, below, here)) * pick_if(plus & minus, scales.two_steps, scales.one_step);
+}
+
+// The same for each component of a vector field, read component by
+// component: g++ vectorises no loop that copies a Vec3 whole.
+DP_HD_INLINE Vec3 air_derivative(const Vec3* at, std::ptrdiff_t stride, unsigned air, int axis, DifferenceScales scales) {
+  const unsigned minus = (air >> (2 * axis)) & 1u, plus = (air >> (2 * axis + 1)) & 1u;
+  const float scale = pick_if(plus & minus, scales.two_steps, scales.one_step);
+  const auto along = [&](float here, float above, float below) { return (pick_if(plus, above, here) - pick_if(minus, below, here)) * scale; };
+  return Vec3{along(at[0].x, at[stride].x, at[-stride].x), along(at[0].y, at[stride].y, at[-stride].y),
+              along(at[0].z, at[stride].z, at[-stride].z)};
 }
 
 // The index steps along x, y and z between a level's cells.
@@ -58,30 +69,46 @@ struct CellSteps {
   DP_HD explicit CellSteps(const PoissonLevel& l) : axis{1, l.nx, static_cast<std::ptrdiff_t>(l.slab())} {}
 };
 
-// omega = curl u and |omega| at the air cells, 0 elsewhere.
+// omega = curl u and |omega| at the air cells, +0 elsewhere. Every cell is
+// computed (the padded field holds a neighbour for each) and the non-air
+// ones cleared on the bits (keep_if), with no branch, so the loop
+// vectorises; the values are those of returning early.
 struct ComputeVorticity {
   PoissonLevel air;  // the finest pressure level: its stencil marks the air neighbours
   DifferenceScales scales;
   const Vec3* velocity;  // cell-centred, padded by a slab
   Vec3* omega;
   float* omega_norm;
-  DP_HD void operator()(std::size_t c) const {
+  DP_HD void operator()(std::size_t c) const { curl_at(c, velocity, omega, omega_norm); }
+#if !defined(__CUDA_ARCH__)
+  // Cells begin .. end - 1 (CpuExec::parallel_for), the fields as restrict
+  // pointers (TakesWholeRanges).
+  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const { curl_over(begin, end, velocity, omega, omega_norm); }
+  DP_HOST_INLINE void curl_over(std::size_t begin, std::size_t end, const Vec3* __restrict v, Vec3* __restrict w,
+                                float* __restrict w_norm) const {
+    for (std::size_t c = begin; c < end; ++c) curl_at(c, v, w, w_norm);
+  }
+#endif
+
+ private:
+  DP_HD_INLINE void curl_at(std::size_t c, const Vec3* v, Vec3* w, float* w_norm) const {
     const unsigned bits = air.stencil[c];
-    if (!(bits & PoissonLevel::kStencilUnknown)) {
-      omega[c] = Vec3{};
-      omega_norm[c] = 0;
-      return;
-    }
+    const unsigned is_air = (bits & PoissonLevel::kStencilUnknown) != 0;
     const CellSteps steps(air);
-    const Vec3* at = velocity + c;
+    const Vec3* at = v + c;
     const Vec3 dx = air_derivative(at, steps.axis[0], bits, 0, scales);
     const Vec3 dy = air_derivative(at, steps.axis[1], bits, 1, scales);
     const Vec3 dz = air_derivative(at, steps.axis[2], bits, 2, scales);
-    omega[c] = Vec3{dy.z - dz.y, dz.x - dx.z, dx.y - dy.x};
-    omega_norm[c] = length(omega[c]);
+    const Vec3 curl{dy.z - dz.y, dz.x - dx.z, dx.y - dy.x};
+    w[c].x = keep_if(curl.x, is_air);  // by component, as air_derivative reads
+    w[c].y = keep_if(curl.y, is_air);
+    w[c].z = keep_if(curl.z, is_air);
+    w_norm[c] = keep_if(length(curl), is_air);
   }
 };
 
+// f = epsilon dx (N x omega) at the air cells where |omega| has a gradient,
+// +0 elsewhere; computed for every cell and selected, as ComputeVorticity.
 struct ComputeConfinementForce {
   PoissonLevel air;  // as in ComputeVorticity
   DifferenceScales scales;
@@ -90,18 +117,30 @@ struct ComputeConfinementForce {
   const float* omega_norm;  // padded by a slab
   float epsilon;
   Vec3* force;
-  DP_HD void operator()(std::size_t c) const {
-    force[c] = Vec3{};
+  DP_HD void operator()(std::size_t c) const { force_at(c, omega, omega_norm, force); }
+#if !defined(__CUDA_ARCH__)
+  // As ComputeVorticity::whole_range.
+  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const { force_over(begin, end, omega, omega_norm, force); }
+  DP_HOST_INLINE void force_over(std::size_t begin, std::size_t end, const Vec3* __restrict w, const float* __restrict w_norm,
+                                 Vec3* __restrict f) const {
+    for (std::size_t c = begin; c < end; ++c) force_at(c, w, w_norm, f);
+  }
+#endif
+
+ private:
+  DP_HD_INLINE void force_at(std::size_t c, const Vec3* w, const float* w_norm, Vec3* out) const {
     const unsigned bits = air.stencil[c];
-    if (!(bits & PoissonLevel::kStencilUnknown)) return;
     const CellSteps steps(air);
-    const float* at = omega_norm + c;
+    const float* at = w_norm + c;
     const Vec3 grad{air_derivative(at, steps.axis[0], bits, 0, scales), air_derivative(at, steps.axis[1], bits, 1, scales),
                     air_derivative(at, steps.axis[2], bits, 2, scales)};
     const float g = length(grad);
     // A flat |omega| has no direction to confine towards.
-    if (!(g > 1e-20f)) return;
-    force[c] = (epsilon * dx) * cross((1.0f / g) * grad, omega[c]);
+    const unsigned confines = ((bits & PoissonLevel::kStencilUnknown) != 0) & (g > 1e-20f);
+    const Vec3 f = (epsilon * dx) * cross((1.0f / g) * grad, Vec3{w[c].x, w[c].y, w[c].z});
+    out[c].x = keep_if(f.x, confines);  // by component, as air_derivative reads
+    out[c].y = keep_if(f.y, confines);
+    out[c].z = keep_if(f.z, confines);
   }
 };
 

@@ -39,6 +39,16 @@ struct TakesWholeRows : std::false_type {};
 template <class F>
 struct TakesWholeRows<F, std::void_t<decltype(std::declval<const F&>().whole_row(0, 0, 0))>> : std::true_type {};
 
+// Whether functor F offers whole_range(begin, end), for elements begin ..
+// end - 1 of a 1-D pass at once: one whose output pointers g++ cannot tell
+// apart from its inputs takes them there as restrict parameters, and its
+// loop vectorises without a run-time overlap test per pair of pointers.
+template <class F, class = void>
+struct TakesWholeRanges : std::false_type {};
+template <class F>
+struct TakesWholeRanges<F, std::void_t<decltype(std::declval<const F&>().whole_range(std::size_t{}, std::size_t{}))>>
+    : std::true_type {};
+
 // The launcher's loops over a range, each one a functor whose call inlines
 // into both copies (CpuExec::run): elements begin .. end - 1 of a 1-D pass,
 // rows begin .. end - 1 of a box, or blocks begin .. end - 1 of a sum.
@@ -47,6 +57,10 @@ struct ElementLoop {
   F f;  // by value, run from a local copy (CpuExec::run_local)
   std::size_t begin, end;
   DP_HD_INLINE void operator()() const {
+    if constexpr (TakesWholeRanges<F>::value) {
+      f.whole_range(begin, end);
+      return;
+    }
     for (std::size_t i = begin; i < end; ++i) f(i);
   }
 };
