@@ -369,6 +369,46 @@ TEST(air_Diffusion, RowsEqualCellByCellBitForBit) {
   expect_diffusion_rows_equal_cell_by_cell<double>(rng);
 }
 
+// The cell forces added to the faces in whole rows (AddCellForceToFaces::
+// whole_row), in both of the launcher's copies, against face by face, bit
+// for bit, on grids down to one cell per axis.
+TEST(air_Forces, FaceRowsEqualFaceByFaceBitForBit) {
+  static_assert(TakesWholeRows<AddCellForceToFaces<0>>::value, "the CPU launcher must find the rows");
+  std::mt19937 rng(61);
+  std::uniform_real_distribution<float> value(-3.0f, 3.0f);
+  const int sizes[][3] = {{1, 1, 1}, {2, 3, 1}, {3, 1, 2}, {7, 4, 5}};
+  for (const auto& n : sizes) {
+    MacGrid g;
+    g.nx = n[0];
+    g.ny = n[1];
+    g.nz = n[2];
+    std::vector<Vec3> force(g.cell_count());
+    for (Vec3& f : force) f = Vec3{value(rng), value(rng), value(rng)};
+    const auto rows_equal_faces = [&](auto axis) {
+      constexpr int a = decltype(axis)::value;
+      std::vector<float> start(g.face_count(a));
+      for (float& x : start) x = value(rng);
+      std::vector<float> one = start;
+      const AddCellForceToFaces<a> by_face{g, force.data(), 0.01f, one.data()};
+      for (int k = 0; k < g.face_n(a, 2); ++k)
+        for (int j = 0; j < g.face_n(a, 1); ++j)
+          for (int i = 0; i < g.face_n(a, 0); ++i) by_face(i, j, k);
+      for (const CpuIsa isa : {CpuIsa::Baseline, CpuIsa::Avx2}) {
+        if (isa == CpuIsa::Avx2 && !cpu_runs_avx2_copy()) continue;
+        std::vector<float> rows = start;
+        CpuExec(1, isa).parallel_for_3d(g.face_n(a, 0), g.face_n(a, 1), g.face_n(a, 2),
+                                        AddCellForceToFaces<a>{g, force.data(), 0.01f, rows.data()});
+        for (std::size_t f = 0; f < one.size(); ++f)
+          ASSERT_EQ(std::memcmp(&one[f], &rows[f], sizeof(float)), 0)
+              << "axis " << a << " (" << cpu_isa_name(isa) << "), grid " << g.nx << "x" << g.ny << "x" << g.nz << ", face " << f;
+      }
+    };
+    rows_equal_faces(std::integral_constant<int, 0>{});
+    rows_equal_faces(std::integral_constant<int, 1>{});
+    rows_equal_faces(std::integral_constant<int, 2>{});
+  }
+}
+
 // CG needs a symmetric positive definite preconditioner: y.M x = x.M y and
 // x.M x > 0 for random x, y, on a grid with obstacles and an open face.
 TEST(air_Multigrid, VCycleIsSymmetricPositiveDefinite) {
