@@ -325,6 +325,15 @@ TEST(air_VaporTransport, FluxRowsEqualFaceByFaceBitForBit) {
   EXPECT_GE(compared, 18);
 }
 
+// A grid of n[0] x n[1] x n[2] cells, the rest as MacGrid's defaults.
+MacGrid grid_of_size(const int (&n)[3]) {
+  MacGrid g;
+  g.nx = n[0];
+  g.ny = n[1];
+  g.nz = n[2];
+  return g;
+}
+
 // Diffusion in whole rows (DiffuseExplicit::whole_row), as the CPU launcher
 // runs it in both copies, against cell by cell, bit for bit, for float
 // (temperature) and double (vapor): grids down to one cell per axis, every
@@ -334,10 +343,7 @@ void expect_diffusion_rows_equal_cell_by_cell(std::mt19937& rng) {
   std::uniform_real_distribution<float> unit(0.0f, 1.0f), value(-2.0f, 2.0f);
   const int sizes[][3] = {{1, 1, 1}, {1, 3, 2}, {2, 2, 3}, {3, 4, 1}, {7, 5, 4}};
   for (const auto& n : sizes) {
-    MacGrid g;
-    g.nx = n[0];
-    g.ny = n[1];
-    g.nz = n[2];
+    const MacGrid g = grid_of_size(n);
     std::vector<T> in(g.cell_count());
     for (std::size_t c = 0; c < in.size(); ++c) in[c] = c % 9 == 4 ? T(-0.0) : static_cast<T>(value(rng));
     std::vector<std::uint8_t> kind(g.cell_count());
@@ -378,10 +384,7 @@ TEST(air_Forces, FaceRowsEqualFaceByFaceBitForBit) {
   std::uniform_real_distribution<float> value(-3.0f, 3.0f);
   const int sizes[][3] = {{1, 1, 1}, {2, 3, 1}, {3, 1, 2}, {7, 4, 5}};
   for (const auto& n : sizes) {
-    MacGrid g;
-    g.nx = n[0];
-    g.ny = n[1];
-    g.nz = n[2];
+    const MacGrid g = grid_of_size(n);
     std::vector<Vec3> force(g.cell_count());
     for (Vec3& f : force) f = Vec3{value(rng), value(rng), value(rng)};
     const auto rows_equal_faces = [&](auto axis) {
