@@ -9,6 +9,9 @@
 // keeps the scheme second order in smooth regions and positive while each
 // cell's outflow Courant number stays below 2/3 (CellOutflowSpeed; AirGrid
 // sub-steps to stay there).
+#include <cstdint>
+#include <cstring>
+
 #include "air/boundary_conditions.h"
 #include "air/cell_kind.h"
 #include "math/keep_if.h"
@@ -132,12 +135,16 @@ struct CellOutflowSpeed {
   const float* w;
   DP_HD float operator()(std::size_t row) const {
     const int j = static_cast<int>(row % grid.ny), k = static_cast<int>(row / grid.ny);
-    float largest = 0.0f;
+    // Every speed is a sum of positive parts: +0, positive or +inf, never
+    // NaN or -0, so its bits as an integer order as the floats do. g++
+    // vectorises an integer max; a float one it keeps scalar unless told
+    // that no NaN and no -0 occur.
+    std::int32_t largest = 0;
     for (int i = 0; i < grid.nx; ++i) {
-      const float s = at(i, j, k);
+      const std::int32_t s = bits_of(at(i, j, k));
       largest = s > largest ? s : largest;
     }
-    return largest;
+    return float_of(largest);
   }
   DP_HD float at(int i, int j, int k) const {
     const float x = positive_part(-u[grid.face(0, i, j, k)]) + positive_part(u[grid.face(0, i + 1, j, k)]);
@@ -148,6 +155,24 @@ struct CellOutflowSpeed {
   // max(s, 0), 0 for NaN as fmaxf gives; a compare, where g++ calls libm's
   // fmaxf unless told that no NaN occurs.
   DP_HD static float positive_part(float s) { return s > 0.0f ? s : 0.0f; }
+  DP_HD static std::int32_t bits_of(float s) {
+#if defined(__CUDA_ARCH__)
+    return __float_as_int(s);
+#else
+    std::int32_t b;
+    std::memcpy(&b, &s, sizeof b);
+    return b;
+#endif
+  }
+  DP_HD static float float_of(std::int32_t b) {
+#if defined(__CUDA_ARCH__)
+    return __int_as_float(b);
+#else
+    float s;
+    std::memcpy(&s, &b, sizeof s);
+    return s;
+#endif
+  }
 };
 
 // Each face of axis Axis's flux, once (the two cells beside it read the

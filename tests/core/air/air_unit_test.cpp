@@ -334,6 +334,36 @@ MacGrid grid_of_size(const int (&n)[3]) {
   return g;
 }
 
+// A row's largest outflow speed, taken on the speeds' bits as integers,
+// against the float comparison it replaced, bit for bit: faces at +-0,
+// +-inf and NaN among random speeds (a NaN face counts as no outflow).
+TEST(air_VaporTransport, RowOutflowSpeedIsTheFloatMaximum) {
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<float> speed(-3.0f, 3.0f), unit(0.0f, 1.0f);
+  const float specials[] = {0.0f, -0.0f, std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::quiet_NaN()};
+  const int sizes[][3] = {{1, 1, 1}, {5, 3, 2}, {17, 4, 3}};
+  for (const auto& n : sizes) {
+    const MacGrid g = grid_of_size(n);
+    std::vector<float> u[3];
+    for (int a = 0; a < 3; ++a) {
+      u[a].resize(g.face_count(a));
+      for (float& x : u[a]) x = unit(rng) < 0.1f ? specials[rng() % 5] : speed(rng);
+    }
+    const CellOutflowSpeed outflow{g, u[0].data(), u[1].data(), u[2].data()};
+    for (int k = 0; k < g.nz; ++k)
+      for (int j = 0; j < g.ny; ++j) {
+        float expected = 0.0f;
+        for (int i = 0; i < g.nx; ++i) {
+          const float s = outflow.at(i, j, k);
+          if (s > expected) expected = s;
+        }
+        const float found = outflow(static_cast<std::size_t>(k) * g.ny + j);
+        ASSERT_EQ(std::memcmp(&expected, &found, sizeof found), 0) << "row j=" << j << " k=" << k << ": " << found << " vs " << expected;
+      }
+  }
+}
+
 // Diffusion in whole rows (DiffuseExplicit::whole_row), as the CPU launcher
 // runs it in both copies, against cell by cell, bit for bit, for float
 // (temperature) and double (vapor): grids down to one cell per axis, every
