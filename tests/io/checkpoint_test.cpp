@@ -32,7 +32,9 @@ SimulationSetup coupled_setup(nlohmann::json* document = nullptr) {
   sim["liquid_blocks"][0]["min_m"] = {-0.0375, 0.03, -0.0375};
   sim["liquid_blocks"][0]["max_m"] = {0.0375, 0.08, 0.0375};
   sim["air"] = {{"resolution", 12}, {"boundary", {{"y_max", "open"}}}};
-  const fs::path dir = fs::temp_directory_path() / "dewpoint-checkpoint-test";
+  // One folder per test: ctest runs this file's tests as parallel processes.
+  const fs::path dir =
+      fs::temp_directory_path() / ("dewpoint-checkpoint-test-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   fs::create_directories(dir);
   std::ofstream(dir / "scene.json") << doc.dump(2);
   const Scene scene = load_scene(dir / "scene.json");
