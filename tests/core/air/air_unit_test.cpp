@@ -269,6 +269,15 @@ TEST(air_Advection, FourLanesEqualOneLaneBitForBit) {
   }
 }
 
+// A grid of n[0] x n[1] x n[2] cells, the rest as MacGrid's defaults.
+MacGrid grid_of_size(const int (&n)[3]) {
+  MacGrid g;
+  g.nx = n[0];
+  g.ny = n[1];
+  g.nz = n[2];
+  return g;
+}
+
 // The CPU launcher hands the vapor flux whole rows (ComputeVaporFlux::
 // whole_row), which decide once per row what lies on the domain and which
 // neighbours lie inside; against the face-by-face flux, bit for bit, in
@@ -281,11 +290,8 @@ TEST(air_VaporTransport, FluxRowsEqualFaceByFaceBitForBit) {
   const int sizes[][3] = {{1, 3, 2}, {2, 2, 3}, {3, 4, 1}, {4, 3, 3}, {5, 1, 4}, {9, 6, 5}};
   int compared = 0;
   for (const auto& n : sizes) {
-    MacGrid g;
+    MacGrid g = grid_of_size(n);
     g.dx = 0.1f;
-    g.nx = n[0];
-    g.ny = n[1];
-    g.nz = n[2];
     std::vector<double> vapor(g.cell_count());
     for (std::size_t c = 0; c < vapor.size(); ++c) vapor[c] = c % 5 == 0 && c > 0 ? vapor[c - 1] : 0.03 * unit(rng);
     std::vector<std::uint8_t> kind(g.cell_count());
@@ -323,15 +329,6 @@ TEST(air_VaporTransport, FluxRowsEqualFaceByFaceBitForBit) {
     face_by_face_equals_rows(std::integral_constant<int, 2>{});
   }
   EXPECT_GE(compared, 18);
-}
-
-// A grid of n[0] x n[1] x n[2] cells, the rest as MacGrid's defaults.
-MacGrid grid_of_size(const int (&n)[3]) {
-  MacGrid g;
-  g.nx = n[0];
-  g.ny = n[1];
-  g.nz = n[2];
-  return g;
 }
 
 // A row's largest outflow speed, taken on the speeds' bits as integers,
