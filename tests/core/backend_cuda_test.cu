@@ -28,6 +28,12 @@ struct IsAbove {
   float bound;
   DP_HD bool operator()(std::size_t i) const { return v[i] > bound; }
 };
+// v at point (i, j, k) of a box nx x ny, stored x fastest.
+struct ValueAtPoint {
+  const float* v;
+  int nx, ny;
+  DP_HD float operator()(int i, int j, int k) const { return v[i + nx * (j + static_cast<std::size_t>(ny) * k)]; }
+};
 // Pass s: out[i] = in[i] + s, reading the previous pass's output of the
 // neighbour i + 1, so a missing barrier between passes shows.
 struct ShiftingPasses {
@@ -87,6 +93,16 @@ TEST_F(CudaBackend, MaxAndFirstMatchTheCpu) {
   EXPECT_EQ(gpu.find_first(n, IsAbove{CudaExec::ptr(device), 4.5f}), std::size_t{123457});
   EXPECT_EQ(gpu.find_first(n, IsAbove{CudaExec::ptr(device), 6.0f}), n);
   EXPECT_EQ(gpu.max(0, ValueOf{nullptr}, -2.0f), -2.0f);
+  // The same values as boxes 100 wide and 50 deep: max_3d runs by cells on
+  // the GPU and by rows on the CPU. 40 layers hold index 123457 (5.0), not
+  // 250001; 24 layers end before both.
+  for (int layers : {60, 40, 24}) {
+    SCOPED_TRACE(layers);
+    const float expected = cpu.max(static_cast<std::size_t>(100 * 50 * layers), ValueOf{host.data()}, -1e30f);
+    EXPECT_EQ(cpu.max_3d(100, 50, layers, ValueAtPoint{host.data(), 100, 50}, -1e30f), expected);
+    EXPECT_EQ(gpu.max_3d(100, 50, layers, ValueAtPoint{CudaExec::ptr(device), 100, 50}, -1e30f), expected);
+  }
+  EXPECT_EQ(gpu.max_3d(100, 50, 0, ValueAtPoint{nullptr, 100, 50}, -2.0f), -2.0f);
 }
 
 TEST_F(CudaBackend, SweepsSeeThePreviousPassEntire) {

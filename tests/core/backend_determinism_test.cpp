@@ -88,6 +88,26 @@ TEST(CpuBackend, KernelsAreBitIdenticalForAnyThreadCount) {
   }
 }
 
+// max_3d over a box, by rows, against the largest over a flat loop; a box
+// narrower than the stored rows shows a row read past its end.
+TEST(CpuBackend, BoxMaximumIsTheLargestOverTheBox) {
+  const int stored = 9, nx = 7, ny = 5, nz = 4;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  std::vector<float> v(static_cast<std::size_t>(stored) * ny * nz);
+  for (float& x : v) x = u(rng);
+  for (int j = 0; j < ny; ++j)
+    for (int k = 0; k < nz; ++k) v[nx + stored * (j + ny * k)] = 2.0f;  // beyond the box
+  float expected = -1e30f;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) expected = std::max(expected, v[i + stored * (j + ny * k)]);
+  const auto at = [&](int i, int j, int k) { return v[i + stored * (j + ny * k)]; };
+  for (int threads : {1, 2, 3}) EXPECT_EQ(CpuExec(threads).max_3d(nx, ny, nz, at, -1e30f), expected);
+  EXPECT_EQ(CpuExec(2).max_3d(nx, ny, 0, at, -5.0f), -5.0f);
+  EXPECT_EQ(CpuExec(2).max_3d(0, ny, nz, at, -5.0f), -5.0f);
+}
+
 TEST(CpuBackend, SortIsStableAndScanIsExclusive) {
   CpuExec exec(2);
   CpuExec::Buffer<std::uint32_t> keys{3, 1, 2, 1, 3, 0}, values{0, 1, 2, 3, 4, 5}, out;

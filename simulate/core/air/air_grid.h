@@ -261,8 +261,8 @@ class AirGrid {
   // Conservative vapor transport, sub-stepped so that no cell's outflow
   // Courant number exceeds kMaxVaporCourant; returns the number of sub-steps.
   int transport_vapor(const Exec& exec, float dt) {
-    const std::size_t rows = static_cast<std::size_t>(grid_.ny) * grid_.nz;
-    const double speed = exec.max(rows, CellOutflowSpeed{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2])}, 0.0f);
+    const double speed =
+        exec.max_3d(grid_.nx, grid_.ny, grid_.nz, CellOutflowSpeed{grid_, Exec::ptr(u_[0]), Exec::ptr(u_[1]), Exec::ptr(u_[2])}, 0.0f);
     const double courant = speed * dt / grid_.dx;
     const int substeps = courant > kMaxVaporCourant ? static_cast<int>(std::ceil(courant / kMaxVaporCourant)) : 1;
     const float h = dt / static_cast<float>(substeps);

@@ -10,7 +10,6 @@
 // cell's outflow Courant number stays below 2/3 (CellOutflowSpeed; AirGrid
 // sub-steps to stay there).
 #include <cstdint>
-#include <cstring>
 
 #include "air/boundary_conditions.h"
 #include "air/cell_kind.h"
@@ -125,54 +124,36 @@ struct VaporFaceFlux {
 // most 1.5 (dt / dx) times this speed times its vapor in a sub-step, and
 // stays positive while (dt / dx) times it is at most 2/3. Per cell, this
 // bound is tighter than the sum of the three axes' largest speeds, which
-// two different cells may hold. Called per row of cells along x (row =
-// j + ny k), it gives the row's largest, so that a max over rows finds the
-// grid's without dividing a cell index for every cell.
+// two different cells may hold. The launcher's max_3d finds the grid's
+// largest: per cell on the GPU, per row (row_max) on the CPU.
 struct CellOutflowSpeed {
   MacGrid grid;
   const float* u;
   const float* v;
   const float* w;
-  DP_HD float operator()(std::size_t row) const {
-    const int j = static_cast<int>(row % grid.ny), k = static_cast<int>(row / grid.ny);
-    // Every speed is a sum of positive parts: +0, positive or +inf, never
-    // NaN or -0, so its bits as an integer order as the floats do. g++
-    // vectorises an integer max; a float one it keeps scalar unless told
-    // that no NaN and no -0 occur.
-    std::int32_t largest = 0;
-    for (int i = 0; i < grid.nx; ++i) {
-      const std::int32_t s = bits_of(at(i, j, k));
-      largest = s > largest ? s : largest;
-    }
-    return float_of(largest);
-  }
-  DP_HD float at(int i, int j, int k) const {
+  DP_HD float operator()(int i, int j, int k) const {
     const float x = positive_part(-u[grid.face(0, i, j, k)]) + positive_part(u[grid.face(0, i + 1, j, k)]);
     const float y = positive_part(-v[grid.face(1, i, j, k)]) + positive_part(v[grid.face(1, i, j + 1, k)]);
     const float z = positive_part(-w[grid.face(2, i, j, k)]) + positive_part(w[grid.face(2, i, j, k + 1)]);
     return x + y + z;
   }
+#if !defined(__CUDA_ARCH__)
+  // The largest over cells 0 .. n - 1 of row (j, k). Every speed is a sum
+  // of positive parts: +0, positive or +inf, never NaN or -0, so its bits
+  // as an integer order as the floats do. g++ vectorises an integer max; a
+  // float one it keeps scalar unless told that no NaN and no -0 occur.
+  DP_HOST_INLINE float row_max(int n, int j, int k) const {
+    std::int32_t largest = 0;
+    for (int i = 0; i < n; ++i) {
+      const std::int32_t s = bits_of((*this)(i, j, k));
+      largest = s > largest ? s : largest;
+    }
+    return from_bits(largest);
+  }
+#endif
   // max(s, 0), 0 for NaN as fmaxf gives; a compare, where g++ calls libm's
   // fmaxf unless told that no NaN occurs.
   DP_HD static float positive_part(float s) { return s > 0.0f ? s : 0.0f; }
-  DP_HD static std::int32_t bits_of(float s) {
-#if defined(__CUDA_ARCH__)
-    return __float_as_int(s);
-#else
-    std::int32_t b;
-    std::memcpy(&b, &s, sizeof b);
-    return b;
-#endif
-  }
-  DP_HD static float float_of(std::int32_t b) {
-#if defined(__CUDA_ARCH__)
-    return __int_as_float(b);
-#else
-    float s;
-    std::memcpy(&s, &b, sizeof s);
-    return s;
-#endif
-  }
 };
 
 // Each face of axis Axis's flux, once (the two cells beside it read the

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -48,6 +49,31 @@ struct TakesWholeRanges : std::false_type {};
 template <class F>
 struct TakesWholeRanges<F, std::void_t<decltype(std::declval<const F&>().whole_range(std::size_t{}, std::size_t{}))>>
     : std::true_type {};
+
+// Whether functor F offers row_max(nx, j, k), the largest of f(i, j, k)
+// over row (j, k) at once: a maximum g++ vectorises only in a form that
+// holds for F's values alone (CellOutflowSpeed takes it on the bits).
+template <class F, class = void>
+struct TakesRowMax : std::false_type {};
+template <class F>
+struct TakesRowMax<F, std::void_t<decltype(std::declval<const F&>().row_max(0, 0, 0))>> : std::true_type {};
+
+// The largest f(i, j, k) of row `row` = j + ny k of a box nx wide, or -inf.
+template <class F>
+struct RowMaxAt {
+  F f;
+  int nx, ny;
+  DP_HD_INLINE float operator()(std::size_t row) const {
+    const int j = static_cast<int>(row % static_cast<std::size_t>(ny)), k = static_cast<int>(row / static_cast<std::size_t>(ny));
+    if constexpr (TakesRowMax<F>::value) {
+      return f.row_max(nx, j, k);
+    } else {
+      float m = -std::numeric_limits<float>::infinity();
+      for (int i = 0; i < nx; ++i) m = std::max(m, static_cast<float>(f(i, j, k)));
+      return m;
+    }
+  }
+};
 
 // The launcher's loops over a range, each one a functor whose call inlines
 // into both copies (CpuExec::run): elements begin .. end - 1 of a 1-D pass,
@@ -255,6 +281,14 @@ class CpuExec {
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : m)
     for (std::int64_t i = 0; i < count; ++i) m = std::max(m, static_cast<float>(f(static_cast<std::size_t>(i))));
     return m;
+  }
+
+  // Largest f(i, j, k) over the box nx x ny x nz; `lowest` when it is
+  // empty. By rows, so that no cell index is divided per cell.
+  template <class ValueAt>
+  float max_3d(int nx, int ny, int nz, const ValueAt& f, float lowest) const {
+    if (nx <= 0) return lowest;
+    return max(static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz), RowMaxAt<ValueAt>{f, nx, ny}, lowest);
   }
 
   void synchronize() const {}

@@ -73,6 +73,17 @@ struct MaxLane {
     return m;
   }
 };
+// f(i, j, k) at cell index c = i + nx (j + ny k) of a box nx x ny.
+template <class F>
+struct AtCell {
+  F f;
+  int nx, ny;
+  __device__ float operator()(std::size_t c) const {
+    const std::size_t row = c / static_cast<std::size_t>(nx);
+    return f(static_cast<int>(c % static_cast<std::size_t>(nx)), static_cast<int>(row % static_cast<std::size_t>(ny)),
+             static_cast<int>(row / static_cast<std::size_t>(ny)));
+  }
+};
 struct Max {
   __device__ float operator()(float a, float b) const { return fmaxf(a, b); }
 };
@@ -314,6 +325,15 @@ class CudaExec {
     float m = lowest;
     for (std::size_t b = 0; b < blocks; ++b) m = block_max[b] > m ? block_max[b] : m;
     return m;
+  }
+
+  // Largest f(i, j, k) over the box nx x ny x nz; `lowest` when it is
+  // empty. By cells: neighbouring lanes read neighbouring cells.
+  template <class ValueAt>
+  float max_3d(int nx, int ny, int nz, const ValueAt& f, float lowest) const {
+    if (nx <= 0 || ny <= 0 || nz <= 0) return lowest;
+    const std::size_t n = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz);
+    return max(n, cuda_detail::AtCell<ValueAt>{f, nx, ny}, lowest);
   }
 
   // Calls f(s, i) for s = 0 .. sweeps-1 and every i in [0, n), all of pass

@@ -331,9 +331,11 @@ TEST(air_VaporTransport, FluxRowsEqualFaceByFaceBitForBit) {
   EXPECT_GE(compared, 18);
 }
 
-// A row's largest outflow speed, taken on the speeds' bits as integers,
-// against the float comparison it replaced, bit for bit: faces at +-0,
-// +-inf and NaN among random speeds (a NaN face counts as no outflow).
+// A row's largest outflow speed, taken on the speeds' bits as integers
+// (CellOutflowSpeed::row_max), against the float comparison over its cells,
+// bit for bit: faces at +-0, +-inf and NaN among random speeds (a NaN face
+// counts as no outflow). Then the CPU launcher's max_3d, which takes the rows
+// through row_max, against the float maximum over every cell.
 TEST(air_VaporTransport, RowOutflowSpeedIsTheFloatMaximum) {
   std::mt19937 rng(29);
   std::uniform_real_distribution<float> speed(-3.0f, 3.0f), unit(0.0f, 1.0f);
@@ -348,16 +350,19 @@ TEST(air_VaporTransport, RowOutflowSpeedIsTheFloatMaximum) {
       for (float& x : u[a]) x = unit(rng) < 0.1f ? specials[rng() % 5] : speed(rng);
     }
     const CellOutflowSpeed outflow{g, u[0].data(), u[1].data(), u[2].data()};
+    float grid_largest = 0.0f;
     for (int k = 0; k < g.nz; ++k)
       for (int j = 0; j < g.ny; ++j) {
         float expected = 0.0f;
         for (int i = 0; i < g.nx; ++i) {
-          const float s = outflow.at(i, j, k);
+          const float s = outflow(i, j, k);
           if (s > expected) expected = s;
         }
-        const float found = outflow(static_cast<std::size_t>(k) * g.ny + j);
+        const float found = outflow.row_max(g.nx, j, k);
         ASSERT_EQ(std::memcmp(&expected, &found, sizeof found), 0) << "row j=" << j << " k=" << k << ": " << found << " vs " << expected;
+        if (expected > grid_largest) grid_largest = expected;
       }
+    for (int threads : {1, 2}) EXPECT_EQ(CpuExec(threads).max_3d(g.nx, g.ny, g.nz, outflow, 0.0f), grid_largest);
   }
 }
 
