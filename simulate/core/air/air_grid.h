@@ -175,6 +175,7 @@ class AirGrid {
       exec.parallel_for(u_[a].size(), FillValue::Into<float>{0.0f, Exec::ptr(u_[a])});
     }
     Exec::upload(inflows_, settings.inflows);
+    for (int a = 0; a < 3; ++a) Exec::upload(inflow_velocity_[a], inflow_velocities_along(settings.inflows, a));
     exec.parallel_for(n, FillValue::Into<double>{settings.ambient_vapor, Exec::ptr(vapor_)});
     exec.parallel_for(n, FillValue::Into<float>{0.0f, Exec::ptr(temperature_excess_)});
     exec.parallel_for(n, FillValue::Into<float>{0.0f, Exec::ptr(phi_)});
@@ -246,7 +247,7 @@ class AirGrid {
     for_each_axis([&](auto axis) {
       constexpr int a = decltype(axis)::value;
       exec.parallel_for_3d(grid_.face_n(a, 0), grid_.face_n(a, 1), grid_.face_n(a, 2),
-                           EnforceFaceVelocity<a>{cells(), Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(u_[a]),
+                           EnforceFaceVelocity<a>{cells(), Exec::ptr(inflow_of_), Exec::ptr(inflow_velocity_[a]), Exec::ptr(u_[a]),
                                                   Exec::ptr(face_prescribed_[a]), Exec::ptr(face_value_[a])});
     });
   }
@@ -508,6 +509,7 @@ class AirGrid {
   DomainFaces faces_;
   BuoyancyParameters buoyancy_{};
   Buffer<AirInflow> inflows_;
+  Buffer<float> inflow_velocity_[3];  // per axis, by inflow_of_ (inflow_velocities_along)
   Buffer<std::uint8_t> kind_, static_kind_, inflow_of_, unknown_;
   Buffer<float> u_[3], u_tmp_[3], u_back_[3];
   // Per face, from the last enforce_boundaries: 1 where prescribed, and the value.

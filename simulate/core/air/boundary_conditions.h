@@ -4,8 +4,11 @@
 // an open domain face next to an air cell. Every other face is prescribed:
 // the inflow velocity where it touches an inflow cell, else zero (closed
 // domain walls, rigid and liquid cells: no flow through them).
+#include <vector>
+
 #include "air/air_settings.h"
 #include "air/cell_kind.h"
+#include "math/keep_if.h"
 
 namespace dp {
 
@@ -34,6 +37,14 @@ DP_HD inline bool face_is_free(const CellKinds& cells, int axis, const FaceSides
   return cells.faces.open(axis, s.lo ? 1 : 0) && cells.kind[inner] == kAirCell;
 }
 
+// The table EnforceFaceVelocity reads along `axis` by a cell's
+// inflow_of_cell entry: 0 for none, then each inflow's velocity.
+inline std::vector<float> inflow_velocities_along(const std::vector<AirInflow>& inflows, int axis) {
+  std::vector<float> table{0.0f};
+  for (const AirInflow& in : inflows) table.push_back(in.velocity[axis]);
+  return table;
+}
+
 // The faces of axis Axis (a compile-time axis folds the index arithmetic).
 // Each face's verdict is also recorded (`prescribed`, `value`), so that
 // ReapplyPrescribedFaces can enforce it again while the cells' kinds stay.
@@ -42,7 +53,7 @@ struct EnforceFaceVelocity {
   static constexpr int axis = Axis;
   CellKinds cells;
   const std::uint8_t* inflow_of_cell;  // 0: none, else index + 1
-  const AirInflow* inflows;
+  const float* inflow_velocity;        // by inflow_of_cell: 0, then each inflow's velocity along Axis
   float* u;
   std::uint8_t* prescribed;  // per face: 1 where enforced
   float* value;              // per face: the enforced velocity (free faces: 0)
@@ -60,15 +71,71 @@ struct EnforceFaceVelocity {
   // The velocity a face that is not free holds.
   DP_HD float prescribed_velocity(const FaceSides& s) const {
     // Walls (closed faces, rigid and liquid cells) win over inflows.
-    const bool wall_lo = s.lo ? (cells.kind[s.cell_lo] == kSolidCell || cells.kind[s.cell_lo] == kLiquidCell)
-                              : !cells.faces.open(axis, 0);
-    const bool wall_hi = s.hi ? (cells.kind[s.cell_hi] == kSolidCell || cells.kind[s.cell_hi] == kLiquidCell)
-                              : !cells.faces.open(axis, 1);
+    const bool wall_lo = s.lo ? is_wall(cells.kind[s.cell_lo]) : !cells.faces.open(axis, 0);
+    const bool wall_hi = s.hi ? is_wall(cells.kind[s.cell_hi]) : !cells.faces.open(axis, 1);
     if (wall_lo || wall_hi) return 0.0f;
     const int in_lo = s.lo ? inflow_of_cell[s.cell_lo] : 0, in_hi = s.hi ? inflow_of_cell[s.cell_hi] : 0;
-    const int n = in_hi ? in_hi : in_lo;
-    return n ? inflows[n - 1].velocity[axis] : 0.0f;
+    return inflow_velocity[in_hi ? in_hi : in_lo];
   }
+
+  DP_HD static bool is_wall(std::uint8_t kind) { return kind == kSolidCell || kind == kLiquidCell; }
+
+#if !defined(__CUDA_ARCH__)
+  // Faces 0 .. n - 1 of row (j, k) (CpuExec::parallel_for_3d). Which faces
+  // have a cell on both sides is decided once per row; those run as one
+  // loop over consecutive cells, the verdict computed for every face and
+  // selected on the bits (keep_if.h), which g++ vectorises. The same values
+  // as face by face.
+  DP_HOST_INLINE void whole_row(int n, int j, int k) const {
+    const MacGrid& g = cells.grid;
+    const int across = Axis == 1 ? j : k;  // the row's coordinate along Axis (y or z)
+    if (Axis != 0 && (across == 0 || across == g.n(Axis))) {  // a domain face: one cell per face
+      for (int i = 0; i < n; ++i) (*this)(i, j, k);
+      return;
+    }
+    // Face i lies between cells lo0 + i and hi0 + i (along x: i - 1 and i).
+    const std::size_t hi0 = g.cell(0, j, k);
+    const std::size_t lo0 = Axis == 0 ? hi0 - 1 : g.cell(0, Axis == 1 ? j - 1 : j, Axis == 2 ? k - 1 : k);
+    const std::size_t f0 = g.face(axis, 0, j, k);
+    if (Axis == 0) (*this)(0, j, k);
+    const int first = Axis == 0 ? 1 : 0, end = Axis == 0 ? n - 1 : n;
+    if (inner_faces_without_inflow(first, end, f0, lo0, hi0)) inflow_faces(first, end, f0, lo0, hi0);
+    if (Axis == 0) (*this)(n - 1, j, k);
+  }
+
+  // Faces f0 + i, i in [first, end), with +0 where an inflow cell sets the
+  // velocity (the table lookup, a gather, would keep the loop scalar);
+  // whether there was such a face.
+  DP_HOST_INLINE bool inner_faces_without_inflow(int first, int end, std::size_t f0, std::size_t lo0, std::size_t hi0) const {
+    const std::uint8_t* __restrict kind = cells.kind;
+    float* __restrict out_u = u + f0;
+    std::uint8_t* __restrict out_prescribed = prescribed + f0;
+    float* __restrict out_value = value + f0;
+    unsigned any_inflow = 0;
+    for (int i = first; i < end; ++i) {
+      const unsigned kind_lo = kind[lo0 + i], kind_hi = kind[hi0 + i];
+      const unsigned free = (kind_lo | kind_hi) == kAirCell;
+      const unsigned wall = (kind_lo - 1u < 2u) | (kind_hi - 1u < 2u);  // kSolidCell or kLiquidCell
+      any_inflow |= (free | wall) ^ 1u;
+      out_u[i] = keep_if(out_u[i], free);
+      out_prescribed[i] = static_cast<std::uint8_t>(free ^ 1u);
+      out_value[i] = 0.0f;
+    }
+    return any_inflow != 0;
+  }
+
+  // The faces an inflow cell sets, between neither a wall nor two air cells.
+  DP_HOST_INLINE void inflow_faces(int first, int end, std::size_t f0, std::size_t lo0, std::size_t hi0) const {
+    for (int i = first; i < end; ++i) {
+      const std::uint8_t kind_lo = cells.kind[lo0 + i], kind_hi = cells.kind[hi0 + i];
+      if ((kind_lo == kAirCell && kind_hi == kAirCell) || is_wall(kind_lo) || is_wall(kind_hi)) continue;
+      const int in_lo = inflow_of_cell[lo0 + i], in_hi = inflow_of_cell[hi0 + i];
+      const float v = inflow_velocity[in_hi ? in_hi : in_lo];
+      u[f0 + i] = v;
+      value[f0 + i] = v;
+    }
+  }
+#endif
 };
 
 // EnforceFaceVelocity's verdicts applied again, face by face: the same

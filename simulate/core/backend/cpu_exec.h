@@ -115,6 +115,32 @@ struct RowLoop {
   }
 };
 
+// The first i of elements begin .. end - 1 where pred holds, or end, into
+// *first. Each block is first tested whole with an or, no exit inside, a
+// loop g++ vectorises where pred allows; only a block where pred holds
+// somewhere is searched element by element.
+template <class Pred>
+struct FirstLoop {
+  Pred pred;
+  std::size_t begin, end;
+  std::size_t* first;
+  DP_HD_INLINE void operator()() const {
+    constexpr std::size_t kBlock = 1024;
+    for (std::size_t b = begin; b < end; b += kBlock) {
+      const std::size_t e = end - b < kBlock ? end : b + kBlock;
+      unsigned any = 0;
+      for (std::size_t i = b; i < e; ++i) any |= pred(i) ? 1u : 0u;
+      if (any) {
+        std::size_t i = b;
+        while (!pred(i)) ++i;
+        *first = i;
+        return;
+      }
+    }
+    *first = end;
+  }
+};
+
 template <class ValueAt>
 struct BlockSumLoop {
   ValueAt f;
@@ -266,10 +292,17 @@ class CpuExec {
   template <class Pred>
   std::size_t find_first(std::size_t n, const Pred& pred) const {
     std::size_t first = n;
-    const std::int64_t count = static_cast<std::int64_t>(n);
-#pragma omp parallel for schedule(static) num_threads(threads_) reduction(min : first) if (uses_threads(n))
-    for (std::int64_t i = 0; i < count; ++i)
-      if (pred(static_cast<std::size_t>(i))) first = std::min(first, static_cast<std::size_t>(i));
+    if (!uses_threads(n)) {
+      run(FirstLoop<Pred>{pred, 0, n, &first});
+      return first;
+    }
+#pragma omp parallel num_threads(threads_) reduction(min : first)
+    {
+      const Share s = share_of(n);
+      std::size_t in_share = s.end;
+      run(FirstLoop<Pred>{pred, s.begin, s.end, &in_share});
+      if (in_share < s.end) first = in_share;
+    }
     return first;
   }
 

@@ -444,6 +444,60 @@ TEST(air_Forces, FaceRowsEqualFaceByFaceBitForBit) {
   }
 }
 
+// The face boundary conditions in whole rows (EnforceFaceVelocity::
+// whole_row), in both of the launcher's copies, against face by face, bit
+// for bit: every kind of cell, two inflows, random open domain faces, and
+// free faces holding -0 and NaN, which must come through untouched.
+TEST(air_Boundaries, FaceRowsEqualFaceByFaceBitForBit) {
+  static_assert(TakesWholeRows<EnforceFaceVelocity<1>>::value, "the CPU launcher must find the rows");
+  std::mt19937 rng(71);
+  std::uniform_real_distribution<float> value(-3.0f, 3.0f);
+  const std::vector<float> table[3] = {{0.0f, 1.5f, -0.5f}, {0.0f, -2.0f, 0.25f}, {0.0f, 0.75f, -0.0f}};
+  const int sizes[][3] = {{1, 1, 1}, {2, 3, 1}, {3, 1, 2}, {7, 4, 5}};
+  for (const auto& n : sizes) {
+    const MacGrid g = grid_of_size(n);
+    std::vector<std::uint8_t> kind(g.cell_count()), inflow_of(g.cell_count());
+    for (std::size_t c = 0; c < kind.size(); ++c) {
+      kind[c] = static_cast<std::uint8_t>(rng() % 4);
+      inflow_of[c] = kind[c] == kInflowCell ? static_cast<std::uint8_t>(1 + rng() % 2) : 0;
+    }
+    DomainFaces faces;
+    faces.open_mask = rng() % 64;
+    const CellKinds cells{g, kind.data(), faces};
+    const auto rows_equal_faces = [&](auto axis) {
+      constexpr int a = decltype(axis)::value;
+      const std::size_t count = g.face_count(a);
+      std::vector<float> start(count);
+      for (std::size_t f = 0; f < count; ++f)
+        start[f] = f % 7 == 3 ? -0.0f : (f % 11 == 5 ? std::numeric_limits<float>::quiet_NaN() : value(rng));
+      std::vector<float> one = start, one_value(count, 9.0f);
+      std::vector<std::uint8_t> one_prescribed(count, 7);
+      const EnforceFaceVelocity<a> by_face{cells, inflow_of.data(), table[a].data(), one.data(), one_prescribed.data(), one_value.data()};
+      for (int k = 0; k < g.face_n(a, 2); ++k)
+        for (int j = 0; j < g.face_n(a, 1); ++j)
+          for (int i = 0; i < g.face_n(a, 0); ++i) by_face(i, j, k);
+      for (const CpuIsa isa : {CpuIsa::Baseline, CpuIsa::Avx2}) {
+        if (isa == CpuIsa::Avx2 && !cpu_runs_avx2_copy()) continue;
+        std::vector<float> rows = start, rows_value(count, 9.0f);
+        std::vector<std::uint8_t> rows_prescribed(count, 7);
+        CpuExec(1, isa).parallel_for_3d(
+            g.face_n(a, 0), g.face_n(a, 1), g.face_n(a, 2),
+            EnforceFaceVelocity<a>{cells, inflow_of.data(), table[a].data(), rows.data(), rows_prescribed.data(), rows_value.data()});
+        for (std::size_t f = 0; f < count; ++f) {
+          SCOPED_TRACE(::testing::Message() << "axis " << a << " (" << cpu_isa_name(isa) << "), grid " << g.nx << "x" << g.ny
+                                            << "x" << g.nz << ", face " << f);
+          ASSERT_EQ(std::memcmp(&one[f], &rows[f], sizeof(float)), 0);
+          ASSERT_EQ(std::memcmp(&one_value[f], &rows_value[f], sizeof(float)), 0);
+          ASSERT_EQ(one_prescribed[f], rows_prescribed[f]);
+        }
+      }
+    };
+    rows_equal_faces(std::integral_constant<int, 0>{});
+    rows_equal_faces(std::integral_constant<int, 1>{});
+    rows_equal_faces(std::integral_constant<int, 2>{});
+  }
+}
+
 // CG needs a symmetric positive definite preconditioner: y.M x = x.M y and
 // x.M x > 0 for random x, y, on a grid with obstacles and an open face.
 TEST(air_Multigrid, VCycleIsSymmetricPositiveDefinite) {
