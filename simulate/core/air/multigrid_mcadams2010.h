@@ -112,6 +112,51 @@ struct ProlongationScale {
     // An unknown fine cell's own coarse cell is unknown, so `unknown` > 0 there.
     scale[fine.index(i, j, k)] = unknown > 0.0f ? all / unknown : 0.0f;
   }
+
+#if !defined(__CUDA_ARCH__)
+  // Cells 0 .. n - 1 of fine row (j, k) (CpuExec::parallel_for_3d): the
+  // coarse rows the row draws on and their y and z weights are found once;
+  // per cell only the two x terms of each remain. The same terms in the
+  // same order as for_each_prolongation_term, so the same bits.
+  DP_HOST_INLINE void whole_row(int n, int j, int k) const {
+    int cj[2], ck[2];
+    coarse_pair(j, cj);
+    coarse_pair(k, ck);
+    float wjk[4];
+    const std::uint8_t* coarse_row[4];
+    int rows = 0;
+    for (int c = 0; c < 2; ++c) {
+      if (ck[c] < 0 || ck[c] >= coarse.nz) continue;
+      const float wk = prolongation_weight(coarse, 2, k, ck[c]);
+      for (int b = 0; b < 2; ++b) {
+        if (cj[b] < 0 || cj[b] >= coarse.ny) continue;
+        wjk[rows] = wk * prolongation_weight(coarse, 1, j, cj[b]);
+        coarse_row[rows++] = coarse.unknown + coarse.index(0, cj[b], ck[c]);
+      }
+    }
+    const bool open_low = coarse.faces.open(0, 0), open_high = coarse.faces.open(0, 1);
+    float* out = scale + fine.index(0, j, k);
+    for (int i = 0; i < n; ++i) {
+      int ci[2];  // near, then far, as for_each_prolongation_term takes them
+      coarse_pair(i, ci);
+      bool inside[2];
+      float wi[2];
+      for (int a = 0; a < 2; ++a) {
+        inside[a] = ci[a] >= 0 && ci[a] < coarse.nx;
+        wi[a] = prolongation_weight(i, ci[a], coarse.nx, open_low, open_high);
+      }
+      float all = 0.0f, unknown = 0.0f;
+      for (int r = 0; r < rows; ++r)
+        for (int a = 0; a < 2; ++a) {
+          if (!inside[a]) continue;
+          const float w = wjk[r] * wi[a];
+          all += w;
+          if (coarse_row[r][ci[a]]) unknown += w;
+        }
+      out[i] = unknown > 0.0f ? all / unknown : 0.0f;
+    }
+  }
+#endif
 };
 
 // The residual the cycle restricts: scale (b - A x), so that restriction
@@ -400,7 +445,7 @@ class MultigridPreconditioner {
     for (std::size_t l = 0; l < levels_.size(); ++l) {
       Level& c = levels_[l];
       if (l > 0) exec.parallel_for(c.unknown.size(), CoarsenUnknown{view(l - 1), c.nx, c.ny, c.nz, Exec::ptr(c.unknown)});
-      exec.parallel_for(c.unknown.size(), BuildPoissonStencil{view(l), Exec::ptr(c.stencil), Exec::ptr(c.diagonal)});
+      exec.parallel_for_3d(c.nx, c.ny, c.nz, BuildPoissonStencil{view(l), Exec::ptr(c.stencil), Exec::ptr(c.diagonal)});
     }
     for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
       Level& f = levels_[l];

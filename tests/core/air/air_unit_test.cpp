@@ -583,7 +583,9 @@ TEST(air_Poisson, PaddedStencilEqualsTheGuardedOneBitForBit) {
   DomainFaces faces;
   faces.open_mask = 1u << 1;  // x max
   PoissonLevel level{nx, ny, nz, unknown.data(), faces, nullptr, nullptr};
-  for (std::size_t c = 0; c < n; ++c) BuildPoissonStencil{level, stencil.data(), diagonal.data()}(c);
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) BuildPoissonStencil{level, stencil.data(), diagonal.data()}(i, j, k);
   level.stencil = stencil.data();
   level.diagonal = diagonal.data();
   PaddedField<CpuExec> x;
@@ -600,6 +602,49 @@ TEST(air_Poisson, PaddedStencilEqualsTheGuardedOneBitForBit) {
   }
   EXPECT_GT(unknowns, n / 2);
   EXPECT_LT(unknowns, n);
+}
+
+// The hierarchy's per-cell set-up in whole rows (BuildPoissonStencil and
+// ProlongationScale, whole_row), in both of the launcher's copies, against
+// cell by cell, bit for bit: levels down to one cell per axis, odd sizes
+// (a coarse level of (n + 1) / 2), random unknowns and open domain faces.
+TEST(air_Multigrid, SetUpRowsEqualCellByCellBitForBit) {
+  static_assert(TakesWholeRows<BuildPoissonStencil>::value && TakesWholeRows<ProlongationScale>::value,
+                "the CPU launcher must find the rows");
+  std::mt19937 rng(83);
+  const int sizes[][3] = {{1, 1, 1}, {2, 3, 1}, {3, 1, 2}, {9, 6, 7}, {16, 8, 9}};
+  for (const auto& n : sizes) {
+    const int cn[3] = {(n[0] + 1) / 2, (n[1] + 1) / 2, (n[2] + 1) / 2};
+    const std::size_t fine_count = static_cast<std::size_t>(n[0]) * n[1] * n[2];
+    const std::size_t coarse_count = static_cast<std::size_t>(cn[0]) * cn[1] * cn[2];
+    std::vector<std::uint8_t> fine_unknown(fine_count), coarse_unknown(coarse_count);
+    for (auto& u : fine_unknown) u = rng() % 5 != 0;
+    for (auto& u : coarse_unknown) u = rng() % 4 != 0;
+    DomainFaces faces;
+    faces.open_mask = rng() % 64;
+    const PoissonLevel fine{n[0], n[1], n[2], fine_unknown.data(), faces, nullptr, nullptr};
+    const PoissonLevel coarse{cn[0], cn[1], cn[2], coarse_unknown.data(), faces, nullptr, nullptr};
+    std::vector<std::uint8_t> stencil(fine_count, 0xAB), diagonal(fine_count, 0xAB);
+    std::vector<float> scale(fine_count, -1.0f);
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i) {
+          BuildPoissonStencil{fine, stencil.data(), diagonal.data()}(i, j, k);
+          ProlongationScale{fine, coarse, scale.data()}(i, j, k);
+        }
+    for (const CpuIsa isa : {CpuIsa::Baseline, CpuIsa::Avx2}) {
+      if (isa == CpuIsa::Avx2 && !cpu_runs_avx2_copy()) continue;
+      SCOPED_TRACE(::testing::Message() << cpu_isa_name(isa) << ", grid " << n[0] << "x" << n[1] << "x" << n[2]);
+      std::vector<std::uint8_t> row_stencil(fine_count, 0xCD), row_diagonal(fine_count, 0xCD);
+      std::vector<float> row_scale(fine_count, -2.0f);
+      const CpuExec exec(1, isa);
+      exec.parallel_for_3d(n[0], n[1], n[2], BuildPoissonStencil{fine, row_stencil.data(), row_diagonal.data()});
+      exec.parallel_for_3d(n[0], n[1], n[2], ProlongationScale{fine, coarse, row_scale.data()});
+      EXPECT_EQ(row_stencil, stencil);
+      EXPECT_EQ(row_diagonal, diagonal);
+      EXPECT_EQ(std::memcmp(row_scale.data(), scale.data(), fine_count * sizeof(float)), 0);
+    }
+  }
 }
 
 TEST(air_Multigrid, IterationsDoNotGrowWithResolution) {
