@@ -182,6 +182,7 @@ class AirGrid {
     exec.parallel_for(n, StaticCellKinds{grid_, rigid, Exec::ptr(static_kind_), Exec::ptr(inflow_of_), Exec::ptr(inflows_),
                                          static_cast<int>(settings.inflows.size())});
     kind_ = static_kind_;
+    Exec::upload(inflow_cells_, inflow_cells_of(Exec::download(inflow_of_)));
     pcg_.resize(grid_.nx, grid_.ny, grid_.nz, faces_);
     ledger_.initial = vapor_mass(exec);
   }
@@ -233,11 +234,12 @@ class AirGrid {
   // Inflow cells take their prescribed temperature and vapor; the vapor
   // this adds (or removes) goes to the ledger.
   void apply_inflows(const Exec& exec) {
-    if (settings_.inflows.empty()) return;
-    const std::size_t n = grid_.cell_count();
-    ledger_.inflow_gain += exec.sum(n, InflowVaporGain{Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(vapor_),
+    const std::size_t n = inflow_cells_.size();
+    if (n == 0) return;
+    const std::uint32_t* cells = Exec::ptr(inflow_cells_);
+    ledger_.inflow_gain += exec.sum(n, InflowVaporGain{cells, Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(vapor_),
                                                        static_cast<double>(grid_.cell_volume())});
-    exec.parallel_for(n, ApplyInflowScalars{Exec::ptr(inflow_of_), Exec::ptr(inflows_), settings_.ambient_temperature,
+    exec.parallel_for(n, ApplyInflowScalars{cells, Exec::ptr(inflow_of_), Exec::ptr(inflows_), settings_.ambient_temperature,
                                             Exec::ptr(vapor_), Exec::ptr(temperature_excess_)});
   }
 
@@ -511,6 +513,7 @@ class AirGrid {
   Buffer<AirInflow> inflows_;
   Buffer<float> inflow_velocity_[3];  // per axis, by inflow_of_ (inflow_velocities_along)
   Buffer<std::uint8_t> kind_, static_kind_, inflow_of_, unknown_;
+  Buffer<std::uint32_t> inflow_cells_;  // the cells inflow_of_ names, in order (inflow_cells_of)
   Buffer<float> u_[3], u_tmp_[3], u_back_[3];
   // Per face, from the last enforce_boundaries: 1 where prescribed, and the value.
   Buffer<std::uint8_t> face_prescribed_[3];

@@ -4,6 +4,7 @@
 // an open domain face next to an air cell. Every other face is prescribed:
 // the inflow velocity where it touches an inflow cell, else zero (closed
 // domain walls, rigid and liquid cells: no flow through them).
+#include <cstdint>
 #include <vector>
 
 #include "air/air_settings.h"
@@ -152,30 +153,42 @@ struct ReapplyPrescribedFaces {
   }
 };
 
-// The vapor mass (kg) an inflow cell gains when its vapor is reset to the
-// prescribed value: the inflow's contribution to the mass ledger.
+// The cells inflows cover (inflow_of_cell not 0), in index order: the
+// inflow passes visit these alone. Static, as the inflows are.
+inline std::vector<std::uint32_t> inflow_cells_of(const std::vector<std::uint8_t>& inflow_of_cell) {
+  std::vector<std::uint32_t> cells;
+  for (std::size_t c = 0; c < inflow_of_cell.size(); ++c)
+    if (inflow_of_cell[c]) cells.push_back(static_cast<std::uint32_t>(c));
+  return cells;
+}
+
+// The vapor mass (kg) the t-th inflow cell gains when its vapor is reset to
+// the prescribed value: the inflow's contribution to the mass ledger.
 struct InflowVaporGain {
+  const std::uint32_t* inflow_cells;
   const std::uint8_t* inflow_of_cell;
   const AirInflow* inflows;
   const double* vapor;
   double cell_volume;
-  DP_HD double operator()(std::size_t c) const {
-    const int n = inflow_of_cell[c];
-    return n ? (inflows[n - 1].vapor - vapor[c]) * cell_volume : 0.0;
+  DP_HD double operator()(std::size_t t) const {
+    const std::uint32_t c = inflow_cells[t];
+    return (inflows[inflow_of_cell[c] - 1].vapor - vapor[c]) * cell_volume;
   }
 };
 
+// The t-th inflow cell takes its inflow's vapor and temperature.
 struct ApplyInflowScalars {
+  const std::uint32_t* inflow_cells;
   const std::uint8_t* inflow_of_cell;
   const AirInflow* inflows;
   float ambient_temperature;
   double* vapor;
   float* temperature_excess;  // T - T_amb
-  DP_HD void operator()(std::size_t c) const {
-    const int n = inflow_of_cell[c];
-    if (!n) return;
-    vapor[c] = inflows[n - 1].vapor;
-    temperature_excess[c] = inflows[n - 1].temperature - ambient_temperature;
+  DP_HD void operator()(std::size_t t) const {
+    const std::uint32_t c = inflow_cells[t];
+    const AirInflow& in = inflows[inflow_of_cell[c] - 1];
+    vapor[c] = in.vapor;
+    temperature_excess[c] = in.temperature - ambient_temperature;
   }
 };
 
