@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../test_folder.h"
 #include "frames.h"
 #include "run_command.h"
 
@@ -19,8 +20,7 @@ namespace {
 class air_SimulateCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    work_ = fs::temp_directory_path() /
-            ("dewpoint-air-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    work_ = dp::test::test_folder("dewpoint-air-cli-");
     fs::remove_all(work_);
     fs::create_directories(work_);
     std::ifstream in(fs::path(DEWPOINT_SOURCE_DIR) / "assets/scenes/demo.json");

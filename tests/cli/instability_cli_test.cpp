@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../test_folder.h"
 #include "checkpoint_folder.h"
 #include "frames.h"
 #include "ply.h"
@@ -27,8 +28,7 @@ namespace {
 class InstabilityCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    work_ = fs::temp_directory_path() / ("dewpoint-instability-cli-" + std::to_string(getpid()) + "-" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    work_ = dp::test::test_folder("dewpoint-instability-cli-" + std::to_string(getpid()) + "-");
     fs::remove_all(work_);
     fs::create_directories(work_);
     std::ifstream in(fs::path(DEWPOINT_SOURCE_DIR) / "assets/scenes/demo.json");

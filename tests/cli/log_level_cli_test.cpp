@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../test_folder.h"
 #include "frames.h"
 #include "run_command.h"
 
@@ -22,8 +23,7 @@ namespace {
 class LogLevelCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    work_ = fs::temp_directory_path() / ("dewpoint-log-level-cli-" + std::to_string(getpid()) + "-" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    work_ = dp::test::test_folder("dewpoint-log-level-cli-" + std::to_string(getpid()) + "-");
     fs::remove_all(work_);
     fs::create_directories(work_);
     std::ifstream in(fs::path(DEWPOINT_SOURCE_DIR) / "assets/scenes/demo.json");

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../test_folder.h"
 #include "run_command.h"
 
 namespace fs = std::filesystem;
@@ -26,8 +27,7 @@ nlohmann::json read_json(const fs::path& file) {
 class PresetCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    work_ = fs::temp_directory_path() /
-            ("dewpoint-preset-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    work_ = dp::test::test_folder("dewpoint-preset-cli-");
     fs::remove_all(work_);
     fs::create_directories(work_);
   }

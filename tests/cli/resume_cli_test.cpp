@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../test_folder.h"
 #include "checkpoint_folder.h"
 #include "frames.h"
 #include "run_command.h"
@@ -48,7 +49,7 @@ std::string without_vdb_uuid(std::string bytes) {
 class ResumeCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    work_ = fs::temp_directory_path() / ("dewpoint-resume-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    work_ = dp::test::test_folder("dewpoint-resume-cli-");
     fs::remove_all(work_);
     fs::create_directories(work_);
     std::ifstream in(fs::path(DEWPOINT_SOURCE_DIR) / "assets/scenes/demo.json");

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../test_folder.h"
 #include "frames.h"
 #include "ply.h"
 #include "run_command.h"
@@ -23,7 +24,7 @@ const fs::path kSource = DEWPOINT_SOURCE_DIR;
 class SimulateCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    work_ = fs::temp_directory_path() / ("dewpoint-simulate-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    work_ = dp::test::test_folder("dewpoint-simulate-cli-");
     fs::remove_all(work_);
     fs::create_directories(work_ / "scenes");
     fs::create_directories(work_ / "meshes");

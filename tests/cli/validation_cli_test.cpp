@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../test_folder.h"
 #include "run_command.h"
 
 namespace fs = std::filesystem;
@@ -33,8 +34,7 @@ std::map<fs::path, std::string> files_under(const fs::path& dir) {
 class ValidationCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    work_ = fs::temp_directory_path() / ("dewpoint-validation-cli-" + std::to_string(getpid()) + "-" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    work_ = dp::test::test_folder("dewpoint-validation-cli-" + std::to_string(getpid()) + "-");
     fs::remove_all(work_);
     fs::create_directories(work_ / "meshes");
     fs::copy_file(kSource / "assets/meshes/tray.obj", work_ / "meshes/tray.obj");

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../test_folder.h"
 #include "checkpoint_folder.h"
 #include "scene.h"
 #include "simulation.h"
@@ -32,9 +33,7 @@ SimulationSetup coupled_setup(nlohmann::json* document = nullptr) {
   sim["liquid_blocks"][0]["min_m"] = {-0.0375, 0.03, -0.0375};
   sim["liquid_blocks"][0]["max_m"] = {0.0375, 0.08, 0.0375};
   sim["air"] = {{"resolution", 12}, {"boundary", {{"y_max", "open"}}}};
-  // One folder per test: ctest runs this file's tests as parallel processes.
-  const fs::path dir =
-      fs::temp_directory_path() / ("dewpoint-checkpoint-test-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  const fs::path dir = dp::test::test_folder("dewpoint-checkpoint-test-");
   fs::create_directories(dir);
   std::ofstream(dir / "scene.json") << doc.dump(2);
   const Scene scene = load_scene(dir / "scene.json");

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../test_folder.h"
 #include "dewpoint/version.h"
 #include "frames.h"
 #include "ply.h"
@@ -40,9 +41,7 @@ struct MesherRun {
 class mesh_Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("dewpoint-mesh-test-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = dp::test::test_folder("dewpoint-mesh-test-" + std::to_string(::getpid()) + "-");
     fs::remove_all(dir_);
     fs::create_directories(frames_dir());
   }

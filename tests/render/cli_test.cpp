@@ -12,6 +12,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "../test_folder.h"
 #include "frames.h"
 #include "ply.h"
 #include "test_meshes.h"
@@ -39,9 +40,7 @@ struct ExrImage {
 class render_cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() /
-            ("dewpoint_render_cli_" + std::to_string(::getpid()) + "_" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    root_ = dp::test::test_folder("dewpoint_render_cli_" + std::to_string(::getpid()) + "_");
     fs::remove_all(root_);
     fs::create_directories(root_ / "frames");
     fs::create_directories(root_ / "meshes");

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <unistd.h>
 
+#include "../test_folder.h"
 #include "frames.h"
 #include "image_environment.h"
 #include "ply.h"
@@ -27,8 +28,7 @@ constexpr int kTexture = 8;
 class render_fog : public ::testing::Test {
  protected:
   void SetUp() override {
-    frames_ = fs::temp_directory_path() / ("dewpoint_render_fog_" + std::to_string(::getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    frames_ = dp::test::test_folder("dewpoint_render_fog_" + std::to_string(::getpid()) + "_");
     fs::create_directories(frames_);
     dp::io::write_ply(rigid_atlas_file(frames_, "mirror"), test::rigid_atlas_ply(test::textured_square(-1, 1, -1, 1, 0)));
 

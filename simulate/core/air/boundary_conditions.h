@@ -79,7 +79,10 @@ struct EnforceFaceVelocity {
     return inflow_velocity[in_hi ? in_hi : in_lo];
   }
 
-  DP_HD static bool is_wall(std::uint8_t kind) { return kind == kSolidCell || kind == kLiquidCell; }
+  // A rigid or liquid cell: no flow through its faces.
+  DP_HD static unsigned is_wall(unsigned kind) { return (kind == kSolidCell) | (kind == kLiquidCell); }
+  // The two cells of an inner face both carry air, which leaves it free.
+  DP_HD static unsigned both_air(unsigned kind_lo, unsigned kind_hi) { return (kind_lo | kind_hi) == kAirCell; }
 
 #if !defined(__CUDA_ARCH__)
   // Faces 0 .. n - 1 of row (j, k) (CpuExec::parallel_for_3d). Which faces
@@ -115,8 +118,7 @@ struct EnforceFaceVelocity {
     unsigned any_inflow = 0;
     for (int i = first; i < end; ++i) {
       const unsigned kind_lo = kind[lo0 + i], kind_hi = kind[hi0 + i];
-      const unsigned free = (kind_lo | kind_hi) == kAirCell;
-      const unsigned wall = (kind_lo - 1u < 2u) | (kind_hi - 1u < 2u);  // kSolidCell or kLiquidCell
+      const unsigned free = both_air(kind_lo, kind_hi), wall = is_wall(kind_lo) | is_wall(kind_hi);
       any_inflow |= (free | wall) ^ 1u;
       out_u[i] = keep_if(out_u[i], free);
       out_prescribed[i] = static_cast<std::uint8_t>(free ^ 1u);
@@ -128,8 +130,8 @@ struct EnforceFaceVelocity {
   // The faces an inflow cell sets, between neither a wall nor two air cells.
   DP_HOST_INLINE void inflow_faces(int first, int end, std::size_t f0, std::size_t lo0, std::size_t hi0) const {
     for (int i = first; i < end; ++i) {
-      const std::uint8_t kind_lo = cells.kind[lo0 + i], kind_hi = cells.kind[hi0 + i];
-      if ((kind_lo == kAirCell && kind_hi == kAirCell) || is_wall(kind_lo) || is_wall(kind_hi)) continue;
+      const unsigned kind_lo = cells.kind[lo0 + i], kind_hi = cells.kind[hi0 + i];
+      if (both_air(kind_lo, kind_hi) | is_wall(kind_lo) | is_wall(kind_hi)) continue;
       const int in_lo = inflow_of_cell[lo0 + i], in_hi = inflow_of_cell[hi0 + i];
       const float v = inflow_velocity[in_hi ? in_hi : in_lo];
       u[f0 + i] = v;

@@ -30,11 +30,6 @@ struct PoissonLevel {
 
   DP_HD std::size_t size() const { return static_cast<std::size_t>(nx) * ny * nz; }
   DP_HD std::size_t index(int i, int j, int k) const { return (static_cast<std::size_t>(k) * ny + j) * nx + i; }
-  DP_HD void coords(std::size_t c, int& i, int& j, int& k) const {
-    i = static_cast<int>(c % nx);
-    j = static_cast<int>((c / nx) % ny);
-    k = static_cast<int>(c / (static_cast<std::size_t>(nx) * ny));
-  }
 
   // Calls f(n, axis, side) for each unknown neighbour n of cell (i, j, k);
   // returns the diagonal (unknown neighbours plus Dirichlet faces).
