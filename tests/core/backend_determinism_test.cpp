@@ -46,7 +46,7 @@ KernelResults run_kernels(int threads) {
   r.order = pg.order;
 
   CpuExec::Buffer<std::uint32_t> counts(pg.grid.cell_count()), offsets;
-  exec.parallel_for(counts.size(), [&](std::size_t c) { counts[c] = pg.cell_end[c] - pg.cell_begin[c]; });
+  exec.parallel_for(counts.size(), [&](std::size_t c) { counts[c] = pg.cell_begin[c + 1] - pg.cell_begin[c]; });
   exec.exclusive_scan(counts, offsets);
   r.scanned = offsets;
 

@@ -19,7 +19,7 @@ struct DeviceSet {
   ParticleGrid<CudaExec> grid;
   CudaExec::Buffer<Vec3> position;  // sorted
   std::vector<Vec3> host_position;
-  std::vector<std::uint32_t> host_order, host_begin, host_end;
+  std::vector<std::uint32_t> host_order, host_begin;
 
   void build(const CudaExec& exec, const std::vector<Vec3>& p, const UniformGrid& g) {
     grid.grid = g;
@@ -32,10 +32,9 @@ struct DeviceSet {
     host_position = CudaExec::download(position);
     host_order = CudaExec::download(grid.order);
     host_begin = CudaExec::download(grid.cell_begin);
-    host_end = CudaExec::download(grid.cell_end);
   }
   GridView device_view() const { return grid.view(position); }
-  GridView host_view() const { return GridView{grid.grid, host_begin.data(), host_end.data(), host_position.data()}; }
+  GridView host_view() const { return GridView{grid.grid, host_begin.data(), host_begin.data() + 1, host_position.data()}; }
   template <class T>
   std::vector<T> to_sorted(const std::vector<T>& v) const {
     std::vector<T> out(v.size());

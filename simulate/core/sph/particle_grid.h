@@ -9,7 +9,10 @@ namespace dp {
 template <class Exec>
 struct ParticleGrid {
   UniformGrid grid;
-  typename Exec::template Buffer<std::uint32_t> key, order, cell_count, cell_begin, cell_end;
+  typename Exec::template Buffer<std::uint32_t> key, order;
+  // cell_count() + 1 entries: cell c holds sorted particles cell_begin[c] ..
+  // cell_begin[c + 1] - 1 (CellBegins).
+  typename Exec::template Buffer<std::uint32_t> cell_begin;
 
   // Sorts positions into the grid; `order[i]` is then the unsorted index of
   // the i-th sorted particle, for the caller to gather its attributes.
@@ -21,20 +24,17 @@ struct ParticleGrid {
     exec.sort_by_key(key, order);
   }
 
-  // Cell ranges of the sorted keys, by count and exclusive scan (Green 2009
-  // finds only non-empty cells' ranges; the scan gives empty cells a range
-  // too, which lets a query walk a row of cells as one run).
+  // Cell ranges of the sorted keys. Green (2009) finds only non-empty
+  // cells' ranges; here empty cells have one too, which lets a query walk a
+  // row of cells as one run.
   void find_ranges(const Exec& exec) {
-    cell_count.resize(grid.cell_count());
-    exec.parallel_for(grid.cell_count(), ClearCounts{Exec::ptr(cell_count)});
-    exec.parallel_for(key.size(), CountPerCell{Exec::ptr(key), key.size(), Exec::ptr(cell_count)});
-    exec.exclusive_scan(cell_count, cell_begin);
-    cell_end.resize(grid.cell_count());
-    exec.parallel_for(grid.cell_count(), CellEnds{Exec::ptr(cell_begin), Exec::ptr(cell_count), Exec::ptr(cell_end)});
+    const std::size_t cells = grid.cell_count();
+    cell_begin.resize(cells + 1);
+    exec.parallel_for(cells + 1, CellBegins{Exec::ptr(key), static_cast<std::uint32_t>(key.size()), Exec::ptr(cell_begin)});
   }
 
   GridView view(const typename Exec::template Buffer<Vec3>& sorted_position) const {
-    return GridView{grid, Exec::ptr(cell_begin), Exec::ptr(cell_end), Exec::ptr(sorted_position)};
+    return GridView{grid, Exec::ptr(cell_begin), Exec::ptr(cell_begin) + 1, Exec::ptr(sorted_position)};
   }
 };
 

@@ -42,7 +42,7 @@ struct UniformGrid {
 struct GridView {
   UniformGrid grid;
   const std::uint32_t* cell_begin;  // per cell, first sorted index
-  const std::uint32_t* cell_end;    // per cell, one past the last
+  const std::uint32_t* cell_end;    // per cell, one past the last (ParticleGrid: cell_begin + 1)
   const Vec3* position;             // sorted positions
 
   // Calls f(j) for every particle j within the 27 cells around p, as nine
@@ -65,7 +65,7 @@ struct GridView {
 };
 
 // Kernels that build a GridView from particles; see ParticleGrid in
-// neighbor_search.h for the sequence.
+// particle_grid.h for the sequence.
 struct ComputeCellKeys {
   UniformGrid grid;
   const Vec3* position;
@@ -77,34 +77,36 @@ struct ComputeCellKeys {
   }
 };
 
-// After sorting, the last particle of each run of equal keys knows its
-// cell's count; each cell entry has exactly one writer.
-struct CountPerCell {
+// cell_begin[c] = the first sorted index whose key is c or more, n where
+// there is none: cell c's range begins there, and cell c - 1's ends there.
+// Written for cells 0 .. cell_count() (one past the last cell), each entry
+// by its own search, so no count has to be cleared and scanned over the
+// whole grid first (a domain of millions of mostly empty cells made that
+// the largest part of a step's neighbour search).
+struct CellBegins {
   const std::uint32_t* sorted_key;
-  std::size_t n;
-  std::uint32_t* cell_count;
-  DP_HD void operator()(std::size_t i) const {
-    std::uint32_t k = sorted_key[i];
-    if (i + 1 == n || sorted_key[i + 1] != k) {
-      std::size_t first = i;
-      while (first > 0 && sorted_key[first - 1] == k) --first;
-      cell_count[k] = static_cast<std::uint32_t>(i + 1 - first);
+  std::uint32_t n;
+  std::uint32_t* cell_begin;
+
+  DP_HD std::uint32_t first_at_or_after(std::uint32_t c, std::uint32_t low) const {
+    std::uint32_t high = n;
+    while (low < high) {
+      const std::uint32_t mid = low + (high - low) / 2;
+      if (sorted_key[mid] < c) low = mid + 1;
+      else high = mid;
+    }
+    return low;
+  }
+  DP_HD void operator()(std::size_t c) const { cell_begin[c] = first_at_or_after(static_cast<std::uint32_t>(c), 0); }
+  // Cells begin .. end - 1 at once (CpuExec): one search, then a walk along
+  // the keys, as many steps as the range has cells and particles.
+  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
+    std::uint32_t first = first_at_or_after(static_cast<std::uint32_t>(begin), 0);
+    for (std::size_t c = begin; c < end; ++c) {
+      while (first < n && sorted_key[first] < c) ++first;
+      cell_begin[c] = first;
     }
   }
-};
-
-struct ClearCounts {
-  std::uint32_t* cell_count;
-  DP_HD void operator()(std::size_t c) const { cell_count[c] = 0; }
-};
-
-// cell_end = cell_begin + count, where cell_begin is the exclusive scan of
-// the counts.
-struct CellEnds {
-  const std::uint32_t* cell_begin;
-  const std::uint32_t* cell_count;
-  std::uint32_t* cell_end;
-  DP_HD void operator()(std::size_t c) const { cell_end[c] = cell_begin[c] + cell_count[c]; }
 };
 
 }  // namespace dp

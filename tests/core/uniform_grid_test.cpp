@@ -1,0 +1,105 @@
+// The neighbour grid's cell ranges (Green 2009), against the standard
+// library's equal_range over the sorted keys and against a scan of every
+// particle; on one thread, on two, and through the per-cell search the CUDA
+// backend runs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "backend/cpu_exec.h"
+#include "sph/particle_grid.h"
+
+namespace dp {
+namespace {
+
+// Clustered points: two dense blobs and a sparse scatter, so that most
+// cells are empty and the gaps between occupied cells are long (the case
+// of a small liquid body in a large domain).
+std::vector<Vec3> clustered_points(unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> blob(0.0f, 0.03f);
+  std::uniform_real_distribution<float> anywhere(-0.1f, 1.1f);  // some fall outside and clamp
+  std::vector<Vec3> p;
+  for (int n = 0; n < 6000; ++n) p.push_back(Vec3{0.2f + blob(rng), 0.3f + blob(rng), 0.25f + blob(rng)});
+  for (int n = 0; n < 3000; ++n) p.push_back(Vec3{0.8f + blob(rng), 0.7f + blob(rng), 0.9f + blob(rng)});
+  for (int n = 0; n < 200; ++n) p.push_back(Vec3{anywhere(rng), anywhere(rng), anywhere(rng)});
+  return p;
+}
+
+struct Built {
+  ParticleGrid<CpuExec> grid;
+  std::vector<Vec3> sorted;
+};
+
+Built build(int threads, const std::vector<Vec3>& points, const UniformGrid& g) {
+  CpuExec exec(threads);
+  Built b;
+  b.grid.grid = g;
+  b.grid.sort(exec, points);
+  b.sorted.resize(points.size());
+  exec.parallel_for(points.size(), Gather<Vec3>{b.grid.order.data(), points.data(), b.sorted.data()});
+  b.grid.find_ranges(exec);
+  return b;
+}
+
+const UniformGrid kGrid{Vec3{0, 0, 0}, 0.02f, 50, 50, 50};
+
+TEST(UniformGrid, EveryCellsRangeIsTheEqualRangeOfItsKey) {
+  const std::vector<Vec3> points = clustered_points(3);
+  for (int threads : {1, 2}) {
+    const Built b = build(threads, points, kGrid);
+    const std::vector<std::uint32_t>& key = b.grid.key;
+    ASSERT_TRUE(std::is_sorted(key.begin(), key.end()));
+    ASSERT_EQ(b.grid.cell_begin.size(), kGrid.cell_count() + std::size_t{1});
+    for (std::uint32_t c = 0; c < kGrid.cell_count(); ++c) {
+      const auto [first, last] = std::equal_range(key.begin(), key.end(), c);
+      ASSERT_EQ(b.grid.cell_begin[c], first - key.begin()) << "cell " << c << ", " << threads << " threads";
+      ASSERT_EQ(b.grid.cell_begin[c + 1], last - key.begin()) << "cell " << c << ", " << threads << " threads";
+    }
+  }
+}
+
+TEST(UniformGrid, PerCellSearchEqualsTheRangeWalk) {
+  // The CUDA backend calls CellBegins per cell; the CPU one hands it ranges.
+  const std::vector<Vec3> points = clustered_points(5);
+  const Built b = build(2, points, kGrid);
+  std::vector<std::uint32_t> per_cell(b.grid.cell_begin.size());
+  const CellBegins begins{b.grid.key.data(), static_cast<std::uint32_t>(b.grid.key.size()), per_cell.data()};
+  for (std::size_t c = 0; c < per_cell.size(); ++c) begins(c);
+  EXPECT_EQ(per_cell, b.grid.cell_begin);
+}
+
+TEST(UniformGrid, NeighbourWalkVisitsExactlyTheParticlesOfThe27Cells) {
+  const std::vector<Vec3> points = clustered_points(7);
+  const Built b = build(2, points, kGrid);
+  const GridView view = b.grid.view(b.sorted);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> anywhere(-0.05f, 1.05f);
+  std::vector<Vec3> queries(points.begin(), points.begin() + 100);
+  for (int n = 0; n < 100; ++n) queries.push_back(Vec3{anywhere(rng), anywhere(rng), anywhere(rng)});
+  for (const Vec3& q : queries) {
+    int qi, qj, qk;
+    kGrid.cell_of(q, qi, qj, qk);
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t n = 0; n < b.sorted.size(); ++n) {
+      int i, j, k;
+      kGrid.cell_of(b.sorted[n], i, j, k);
+      if (std::abs(i - qi) <= 1 && std::abs(j - qj) <= 1 && std::abs(k - qk) <= 1) expected.push_back(n);
+    }
+    std::vector<std::uint32_t> found;
+    view.for_each_near(q, [&](std::uint32_t n) { found.push_back(n); });
+    std::sort(found.begin(), found.end());
+    ASSERT_EQ(found, expected) << "query (" << q.x << ", " << q.y << ", " << q.z << ")";
+  }
+}
+
+TEST(UniformGrid, NoParticlesGiveEveryCellAnEmptyRange) {
+  const Built b = build(2, {}, kGrid);
+  for (std::uint32_t begin : b.grid.cell_begin) ASSERT_EQ(begin, 0u);
+}
+
+}  // namespace
+}  // namespace dp
