@@ -1,21 +1,23 @@
 #pragma once
 // How many grid points the sampling code (staggered_sampling.h) works on at
 // once. It is written once over a lanes policy: OneLane, for every caller
-// and for all GPU work, or FourLanes, four consecutive points of an x row
-// as SSE vectors, which the CPU launcher uses for the semi-Lagrangian pass
-// (MacCormack's correction pass stays one point at a time) and for the
-// multigrid transfers (multigrid_mcadams2010.h). A back-trace
+// and for all GPU work, or VectorLanes, four (SSE) or eight (AVX)
+// consecutive points of an x row, which the CPU launcher uses for the
+// semi-Lagrangian pass (MacCormack's correction pass stays one point at a
+// time) and, four at a time, for the multigrid transfers
+// (multigrid_mcadams2010.h). A back-trace
 // is some 400 scalar instructions around data-dependent gathers, which g++
 // does not vectorise by itself on baseline x86-64, and it was 40 % of the
 // CPU air step (docs/benchmarks.md). Both policies run the same
 // floating-point operations in the same order on each point, so for
 // finite velocity fields the results are the same bit for bit (tested).
-// (With a non-finite velocity a group of four may take the general
+// (With a non-finite velocity a group of lanes may take the general
 // sampling path where one point would take the fixed-weight one, and
 // 0 * inf differs from not multiplying; the step stops on such a field.)
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 #include "backend/host_device.h"
 
@@ -55,28 +57,53 @@ struct OneLane {
 };
 
 #if !defined(__CUDA_ARCH__)
-// Four points, as GCC/Clang vector extensions, in host code only (nvcc's
-// host pass takes them too, so the CPU backend's functors are the same in
-// .cu and .cpp files). Lattice positions are 32-bit lanes: the CPU
-// launcher takes this path only for lattices of fewer than 2^31 points
-// (lanes_fit).
-struct FourLanes {
+// N consecutive points (4 or 8), as GCC/Clang vector extensions, in host
+// code only (nvcc's host pass takes them too, so the CPU backend's functors
+// are the same in .cu and .cpp files): FourLanes, SSE registers, in both of
+// the launcher's copies; EightLanes, AVX registers, in its AVX2 copy only
+// (cpu_isa.h), which is where it calls eight_along_x. Every member is
+// forced inline, so that it takes the instruction set of the loop it runs
+// in. Lattice positions are 32-bit lanes: the CPU launcher takes this path
+// only for lattices of fewer than 2^31 points (lanes_fit).
+// Registers of N floats, N ints, N / 2 doubles (g++ takes no vector_size
+// that depends on a template parameter).
+template <int N>
+struct LaneRegisters;
+template <>
+struct LaneRegisters<4> {
   typedef float Real __attribute__((vector_size(16)));
   typedef int Int __attribute__((vector_size(16)));
+  typedef double Pairs __attribute__((vector_size(16)));
+};
+template <>
+struct LaneRegisters<8> {
+  typedef float Real __attribute__((vector_size(32)));
+  typedef int Int __attribute__((vector_size(32)));
+  typedef double Pairs __attribute__((vector_size(32)));
+};
+
+template <int N>
+struct VectorLanes {
+  using Real = typename LaneRegisters<N>::Real;
+  using Int = typename LaneRegisters<N>::Int;
   using Value = Real;
   using Index = Int;
-  static constexpr int kCount = 4;
+  static constexpr int kCount = N;
 
-  static Real reals(float v) { return Real{v, v, v, v}; }
-  static Int ints(int v) { return Int{v, v, v, v}; }
-  static Int truncate(Real v) { return __builtin_convertvector(v, Int); }
-  static Real to_real(Int v) { return __builtin_convertvector(v, Real); }
-  static Index to_index(Int v) { return v; }
-  static Int consecutive(int first) { return Int{first, first + 1, first + 2, first + 3}; }
-  static Value weight(Real t) { return t; }
-  static Value load(const float* p, Index i) { return Value{p[i[0]], p[i[1]], p[i[2]], p[i[3]]}; }
-  static Value load_consecutive(const float* p, std::size_t first) { return load_row(p + first); }
-  // OneLane::corners for four points: each lane's position is taken out of
+  DP_HOST_INLINE static Real reals(float v) { return broadcast<Real>(v); }
+  DP_HOST_INLINE static Int ints(int v) { return broadcast<Int>(v); }
+  DP_HOST_INLINE static Int truncate(Real v) { return __builtin_convertvector(v, Int); }
+  DP_HOST_INLINE static Real to_real(Int v) { return __builtin_convertvector(v, Real); }
+  DP_HOST_INLINE static Index to_index(Int v) { return v; }
+  DP_HOST_INLINE static Int consecutive(int first) { return first + lane_numbers(std::make_integer_sequence<int, N>{}); }
+  DP_HOST_INLINE static Value weight(Real t) { return t; }
+  DP_HOST_INLINE static Value load(const float* p, Index i) {
+    Value v;
+    for (int l = 0; l < N; ++l) v[l] = p[i[l]];
+    return v;
+  }
+  DP_HOST_INLINE static Value load_consecutive(const float* p, std::size_t first) { return load_row(p + first); }
+  // OneLane::corners for N points: each lane's position is taken out of
   // the vector once, and its eight corners are loaded at fixed offsets from
   // it, rather than every corner's position being formed in a vector and
   // taken apart lane by lane (a third of the back-trace's instructions).
@@ -84,7 +111,8 @@ struct FourLanes {
     Value v[8];
   };
   DP_HOST_INLINE static Corners corners(const float* p, Index c, std::ptrdiff_t di, std::ptrdiff_t dj, std::ptrdiff_t dk) {
-    const float* const at[kCount] = {p + c[0], p + c[1], p + c[2], p + c[3]};
+    const float* at[N];
+    for (int l = 0; l < N; ++l) at[l] = p + c[l];
     Corners k;
     if (di == 1) {  // neighbours along x: one 8-byte load per lane for both
       gather_pair(at, 0, k.v[0], k.v[1]);
@@ -97,43 +125,65 @@ struct FourLanes {
     for (int n = 0; n < 8; ++n) k.v[n] = gather(at, d[n]);
     return k;
   }
-  DP_HOST_INLINE static Value gather(const float* const* at, std::ptrdiff_t d) { return Value{at[0][d], at[1][d], at[2][d], at[3][d]}; }
+  DP_HOST_INLINE static Value gather(const float* const* at, std::ptrdiff_t d) {
+    Value v;
+    for (int l = 0; l < N; ++l) v[l] = at[l][d];
+    return v;
+  }
   // Each lane's at[d] into `first` and at[d + 1] into `second`.
   DP_HOST_INLINE static void gather_pair(const float* const* at, std::ptrdiff_t d, Value& first, Value& second) {
-    typedef double Pairs __attribute__((vector_size(16)));
-    double q[kCount];
-    for (int l = 0; l < kCount; ++l) std::memcpy(&q[l], at[l] + d, sizeof(double));
-    const Value lanes01 = reinterpret_cast<Value>(Pairs{q[0], q[1]}), lanes23 = reinterpret_cast<Value>(Pairs{q[2], q[3]});
-    first = pick<0, 2, 4, 6>(lanes01, lanes23);
-    second = pick<1, 3, 5, 7>(lanes01, lanes23);
+    typename LaneRegisters<N>::Pairs low, high;  // lanes 0 .. N/2 - 1, and the rest
+    for (int l = 0; l < N / 2; ++l) {
+      std::memcpy(&low[l], at[l] + d, sizeof(double));
+      std::memcpy(&high[l], at[N / 2 + l] + d, sizeof(double));
+    }
+    first = every_other<0>(reinterpret_cast<Value>(low), reinterpret_cast<Value>(high), std::make_integer_sequence<int, N>{});
+    second = every_other<1>(reinterpret_cast<Value>(low), reinterpret_cast<Value>(high), std::make_integer_sequence<int, N>{});
   }
-  static void store(float* p, Value v) {
-    for (int l = 0; l < kCount; ++l) p[l] = v[l];
-  }
-  // p[0 .. 3], one unaligned load.
-  static Value load_row(const float* p) {
+  DP_HOST_INLINE static void store(float* p, Value v) { std::memcpy(p, &v, sizeof v); }
+  // p[0 .. N - 1], one unaligned load.
+  DP_HOST_INLINE static Value load_row(const float* p) {
     Value v;
     std::memcpy(&v, p, sizeof v);
     return v;
   }
-  // Lanes A, B, C, D of the eight of a then b.
-  template <int A, int B, int C, int D>
-  static Value pick(Value a, Value b) {
+  // Lanes I... of the 2N of a then b.
+  template <int... I>
+  DP_HOST_INLINE static Value pick(Value a, Value b) {
+    static_assert(sizeof...(I) == N, "one source lane per lane");
 #if defined(__clang__)
-    return __builtin_shufflevector(a, b, A, B, C, D);
+    return __builtin_shufflevector(a, b, I...);
 #else
-    return __builtin_shuffle(a, b, Int{A, B, C, D});
+    return __builtin_shuffle(a, b, Int{I...});
 #endif
   }
   // v where mask[lane] is non-zero, +0 elsewhere: on the bits, as keep_if.
-  static Value keep_where(Value v, const std::uint8_t* mask) {
-    const Int keep = Int{mask[0], mask[1], mask[2], mask[3]} != ints(0);
-    return reinterpret_cast<Value>(reinterpret_cast<Int>(v) & keep);
+  DP_HOST_INLINE static Value keep_where(Value v, const std::uint8_t* mask) {
+    Int m;
+    for (int l = 0; l < N; ++l) m[l] = mask[l];
+    return reinterpret_cast<Value>(reinterpret_cast<Int>(v) & (m != ints(0)));
   }
 
   static constexpr std::size_t kMaxPoints = std::size_t{1} << 31;
   static bool lanes_fit(std::size_t points) { return points < kMaxPoints; }
+
+ private:
+  template <class V, class S>
+  DP_HOST_INLINE static V broadcast(S v) {
+    V lanes;
+    for (int l = 0; l < N; ++l) lanes[l] = v;
+    return lanes;
+  }
+  template <int... L>
+  DP_HOST_INLINE static Int lane_numbers(std::integer_sequence<int, L...>) { return Int{L...}; }
+  // Lanes First, First + 2, ... of the 2N of a then b.
+  template <int First, int... L>
+  DP_HOST_INLINE static Value every_other(Value a, Value b, std::integer_sequence<int, L...>) {
+    return pick<(2 * L + First)...>(a, b);
+  }
 };
+using FourLanes = VectorLanes<4>;
+using EightLanes = VectorLanes<8>;
 #endif
 
 }  // namespace dp

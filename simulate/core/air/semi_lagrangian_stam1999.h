@@ -40,8 +40,10 @@ struct AdvectSemiLagrangian {
   DP_HD void operator()(int i, int j, int k) const { advect<OneLane<T>>(i, j, k); }
 
 #if !defined(__CUDA_ARCH__)
-  // Points (i .. i + 3, j, k) at once, as SSE lanes (CpuExec::parallel_for_3d).
+  // Points (i .. i + 3, j, k) at once, as SSE lanes, or (i .. i + 7, j, k)
+  // as AVX lanes (CpuExec::parallel_for_3d).
   DP_HOST_INLINE void four_along_x(int i, int j, int k) const { advect<FourLanes>(i, j, k); }
+  DP_HOST_INLINE void eight_along_x(int i, int j, int k) const { advect<EightLanes>(i, j, k); }
   bool lanes_fit() const {
     return FourLanes::lanes_fit(source.size()) && FourLanes::lanes_fit(velocity.u.size()) &&
            FourLanes::lanes_fit(velocity.v.size()) && FourLanes::lanes_fit(velocity.w.size());

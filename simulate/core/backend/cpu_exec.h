@@ -32,6 +32,22 @@ struct TakesFourAlongX<F, std::void_t<decltype(std::declval<const F&>().four_alo
                                       decltype(static_cast<bool>(std::declval<const F&>().lanes_fit()))>>
     : std::true_type {};
 
+// Whether functor F offers eight_along_x(i, j, k) as well: eight points as
+// AVX lanes, which only the launcher's AVX2 copy calls.
+template <class F, class = void>
+struct TakesEightAlongX : std::false_type {};
+template <class F>
+struct TakesEightAlongX<F, std::void_t<decltype(std::declval<const F&>().eight_along_x(0, 0, 0))>> : TakesFourAlongX<F> {};
+
+// The copy of the launcher's loops that runs (cpu_isa.h, CpuExec::run),
+// handed to each loop: the AVX2 copy's rows may take eight lanes at once.
+struct BaselineCopy {
+  static constexpr bool kEightLanes = false;
+};
+struct Avx2Copy {
+  static constexpr bool kEightLanes = true;
+};
+
 // Whether functor F offers whole_row(nx, j, k), for points 0 .. nx - 1 of
 // row (j, k) at once: a functor whose per-point branches are the same along
 // a row decides them once there, and its inner loop vectorises.
@@ -82,7 +98,8 @@ template <class F>
 struct ElementLoop {
   F f;  // by value, run from a local copy (CpuExec::run_local)
   std::size_t begin, end;
-  DP_HD_INLINE void operator()() const {
+  template <class Copy>
+  DP_HD_INLINE void operator()(Copy) const {
     if constexpr (TakesWholeRanges<F>::value) {
       f.whole_range(begin, end);
       return;
@@ -96,8 +113,9 @@ struct RowLoop {
   F f;
   int nx, ny;
   std::int64_t begin, end;
-  bool four;  // hand whole groups of four to f.four_along_x (sample_lanes.h)
-  DP_HD_INLINE void operator()() const {
+  bool lanes;  // hand whole groups of lanes to f.four_along_x, f.eight_along_x (sample_lanes.h)
+  template <class Copy>
+  DP_HD_INLINE void operator()(Copy) const {
     for (std::int64_t r = begin; r < end; ++r) {
       const int j = static_cast<int>(r % ny), k = static_cast<int>(r / ny);
       if constexpr (TakesWholeRows<F>::value) {
@@ -106,7 +124,10 @@ struct RowLoop {
       }
       int i = 0;
       if constexpr (TakesFourAlongX<F>::value) {
-        if (four) {
+        if (lanes) {
+          if constexpr (Copy::kEightLanes && TakesEightAlongX<F>::value) {
+            for (; i + 8 <= nx; i += 8) f.eight_along_x(i, j, k);
+          }
           for (; i + 4 <= nx; i += 4) f.four_along_x(i, j, k);
         }
       }
@@ -124,7 +145,8 @@ struct FirstLoop {
   Pred pred;
   std::size_t begin, end;
   std::size_t* first;
-  DP_HD_INLINE void operator()() const {
+  template <class Copy>
+  DP_HD_INLINE void operator()(Copy) const {
     constexpr std::size_t kBlock = 1024;
     for (std::size_t b = begin; b < end; b += kBlock) {
       const std::size_t e = end - b < kBlock ? end : b + kBlock;
@@ -147,7 +169,8 @@ struct BlockSumLoop {
   std::size_t n;
   double* sums;
   std::size_t begin, end;
-  DP_HD_INLINE void operator()() const {
+  template <class Copy>
+  DP_HD_INLINE void operator()(Copy) const {
     for (std::size_t b = begin; b < end; ++b) sums[b] = sum_block(b, n, f);
   }
 };
@@ -210,21 +233,22 @@ class CpuExec {
   // whole x rows, so a functor is handed its coordinates without dividing a
   // linear index and its inner loop runs along contiguous memory.
   // A functor with four_along_x(i, j, k) (and lanes_fit() true) is handed
-  // four points of a row at a time (sample_lanes.h), the rest one by one;
-  // one with whole_row(nx, j, k) whole rows.
+  // four points of a row at a time (sample_lanes.h), and in the AVX2 copy
+  // eight at a time where it has eight_along_x, the rest one by one; one
+  // with whole_row(nx, j, k) whole rows.
   template <class F>
   void parallel_for_3d(int nx, int ny, int nz, const F& f) const {
     const std::int64_t rows = static_cast<std::int64_t>(ny) * nz;
-    bool four = false;
-    if constexpr (TakesFourAlongX<F>::value) four = f.lanes_fit();
+    bool lanes = false;
+    if constexpr (TakesFourAlongX<F>::value) lanes = f.lanes_fit();
     if (!uses_threads(static_cast<std::size_t>(rows) * nx)) {
-      run(RowLoop<F>{f, nx, ny, 0, rows, four});
+      run(RowLoop<F>{f, nx, ny, 0, rows, lanes});
       return;
     }
 #pragma omp parallel num_threads(threads_)
     {
       const Share s = share_of(static_cast<std::size_t>(rows));
-      run(RowLoop<F>{f, nx, ny, static_cast<std::int64_t>(s.begin), static_cast<std::int64_t>(s.end), four});
+      run(RowLoop<F>{f, nx, ny, static_cast<std::int64_t>(s.begin), static_cast<std::int64_t>(s.end), lanes});
     }
   }
 
@@ -348,12 +372,12 @@ class CpuExec {
       return;
     }
 #endif
-    run_local(loop);
+    run_local(loop, BaselineCopy{});
   }
 #if DP_CPU_HAS_AVX2_COPY
   template <class Loop>
   DP_AVX2_COPY static void run_avx2(const Loop& loop) {
-    run_local(loop);
+    run_local(loop, Avx2Copy{});
   }
 #endif
   // The loop runs from a copy in this frame, whose address nothing else
@@ -361,10 +385,10 @@ class CpuExec {
   // pointers and scalars. Run through the caller's reference, it reloaded
   // them every element and, in the AVX2 copy, left loops scalar (the CG's
   // vector updates, buoyancy; docs/benchmarks.md).
-  template <class Loop>
-  DP_HOST_INLINE static void run_local(const Loop& loop) {
+  template <class Loop, class Copy>
+  DP_HOST_INLINE static void run_local(const Loop& loop, Copy copy) {
     const Loop local = loop;
-    local();
+    local(copy);
   }
 
   int threads_;

@@ -187,7 +187,7 @@ TEST(air_Multigrid, TransferPassesFourLanesEqualOneLaneBitForBit) {
 }
 
 // The corner search (clamped lower corner and weight) against its
-// definition with floor in double precision, one lane and four: offsets on
+// definition with floor in double precision, one lane, four and eight: offsets on
 // and next to cell boundaries, beyond both ends, and far beyond (where a
 // truncation to int would overflow), on lattices of 1, 2 and 5 points.
 TEST(air_Sampling, CornerSearchMatchesFloorAndClamp) {
@@ -221,37 +221,46 @@ TEST(air_Sampling, CornerSearchMatchesFloorAndClamp) {
           EXPECT_EQ(four.i[l], i) << "lane " << l << ", n " << n << ", base " << base << ", offset " << offset;
           EXPECT_EQ(four.t[l], t) << "lane " << l << ", n " << n << ", base " << base << ", offset " << offset;
         }
+        const auto eight = CornerOf<EightLanes>::locate(EightLanes::ints(base), EightLanes::reals(offset), n);
+        for (int l = 0; l < 8; ++l) {
+          EXPECT_EQ(eight.i[l], i) << "lane " << l << " of 8, n " << n << ", base " << base << ", offset " << offset;
+          EXPECT_EQ(eight.t[l], t) << "lane " << l << " of 8, n " << n << ", base " << base << ", offset " << offset;
+        }
         ++checked;
       }
   EXPECT_EQ(checked, 3 * 4 * 18);
 }
 
-// The CPU's four-lane back-trace (sample_lanes.h), as CpuExec runs it,
+// The CPU's lane back-traces (sample_lanes.h), as CpuExec runs them, four
+// at a time in the baseline copy, eight and then four in the AVX2 copy,
 // against the one-point trace on the same fields, bit for bit, on every
-// lattice of a MAC grid: rows that end in a whole group of four and rows
-// with points left over, a random flow fast enough (up to 6 cells per step,
-// forwards and backwards as MacCormack traces) that traces leave the grid
-// and are clamped, and velocities of 0 and -0 at some faces.
+// lattice of a MAC grid: rows that end in whole groups and rows with points
+// left over, a random flow fast enough (up to 6 cells per step, forwards
+// and backwards as MacCormack traces) that traces leave the grid and are
+// clamped, and velocities of 0 and -0 at some faces.
 template <int Points>
-void expect_four_lanes_equal_one(const FaceVelocity& vel, const Lattice<float>& source, float c) {
-  static_assert(TakesFourAlongX<AdvectSemiLagrangian<float, Points>>::value, "the CPU launcher must find the lanes");
-  std::vector<float> one(source.size()), four(source.size());
+void expect_lanes_equal_one(const FaceVelocity& vel, const Lattice<float>& source, float c, CpuIsa isa) {
+  static_assert(TakesEightAlongX<AdvectSemiLagrangian<float, Points>>::value, "the CPU launcher must find the lanes");
+  std::vector<float> one(source.size()), lanes(source.size());
   const AdvectSemiLagrangian<float, Points> by_one{source, vel, c, one.data()};
-  const AdvectSemiLagrangian<float, Points> by_four{source, vel, c, four.data()};
-  ASSERT_TRUE(by_four.lanes_fit());
-  CpuExec(1).parallel_for_3d(source.nx, source.ny, source.nz, by_four);
+  const AdvectSemiLagrangian<float, Points> by_lanes{source, vel, c, lanes.data()};
+  ASSERT_TRUE(by_lanes.lanes_fit());
+  CpuExec(1, isa).parallel_for_3d(source.nx, source.ny, source.nz, by_lanes);
   for (int k = 0; k < source.nz; ++k)
     for (int j = 0; j < source.ny; ++j)
       for (int i = 0; i < source.nx; ++i) by_one(i, j, k);
   for (std::size_t n = 0; n < one.size(); ++n)
-    ASSERT_EQ(std::memcmp(&one[n], &four[n], sizeof(float)), 0) << "lattice " << Points << ", point " << n << ": " << one[n]
-                                                                   << " vs " << four[n];
+    ASSERT_EQ(std::memcmp(&one[n], &lanes[n], sizeof(float)), 0)
+        << cpu_isa_name(isa) << ", lattice " << Points << ", point " << n << ": " << one[n] << " vs " << lanes[n];
 }
 
-TEST(air_Advection, FourLanesEqualOneLaneBitForBit) {
+TEST(air_Advection, LanesEqualOneLaneBitForBit) {
   MacGrid g;
   g.dx = 0.1f;
-  g.nx = 15;  // the u lattice's rows (16) end in a whole group of four, the cells' (15) do not
+  // The u lattice's rows (16) end in whole groups of four and eight, the
+  // cells' (15) and the v and w lattices' rows take eight, four, then three
+  // one by one.
+  g.nx = 15;
   g.ny = 10;
   g.nz = 7;
   std::mt19937 rng(29);
@@ -261,12 +270,15 @@ TEST(air_Advection, FourLanesEqualOneLaneBitForBit) {
     for (std::size_t n = 0; n < f->size(); ++n) (*f)[n] = n % 11 == 0 ? 0.0f : (n % 13 == 0 ? -0.0f : speed(rng));
   for (float& x : t) x = value(rng);
   const FaceVelocity vel = face_velocity(g, u.data(), v.data(), w.data());
-  for (const float c : {0.1f / g.dx, -0.1f / g.dx}) {  // dt / dx: up to 6 cells per step
-    expect_four_lanes_equal_one<kCellCentres>(vel, cell_lattice(g, t.data()), c);
-    expect_four_lanes_equal_one<0>(vel, vel.u, c);
-    expect_four_lanes_equal_one<1>(vel, vel.v, c);
-    expect_four_lanes_equal_one<2>(vel, vel.w, c);
-  }
+  std::vector<CpuIsa> copies{CpuIsa::Baseline};
+  if (cpu_runs_avx2_copy()) copies.push_back(CpuIsa::Avx2);
+  for (const CpuIsa isa : copies)
+    for (const float c : {0.1f / g.dx, -0.1f / g.dx}) {  // dt / dx: up to 6 cells per step
+      expect_lanes_equal_one<kCellCentres>(vel, cell_lattice(g, t.data()), c, isa);
+      expect_lanes_equal_one<0>(vel, vel.u, c, isa);
+      expect_lanes_equal_one<1>(vel, vel.v, c, isa);
+      expect_lanes_equal_one<2>(vel, vel.w, c, isa);
+    }
 }
 
 // A grid of n[0] x n[1] x n[2] cells, the rest as MacGrid's defaults.
