@@ -13,6 +13,7 @@
 // departures).
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "air/poisson_level.h"
@@ -245,35 +246,35 @@ struct RestrictAlong {
 
 #if !defined(__CUDA_ARCH__)
   // Coarse points (i .. i + 3, j, k) as SSE lanes (CpuExec::parallel_for_3d),
-  // the same operations in the same order as one by one. Along y and z the
-  // four read contiguous fine rows with one weight set. Along x they read
-  // fine cells 2i - 1 .. 2i + 8, every other one per term, which only away
-  // from the ends of the row share the weights 1/4, 3/4, 3/4, 1/4; groups
-  // at the ends go one point at a time.
+  // the same operations in the same order as one by one: along y and z the
+  // four read contiguous fine rows with one weight set.
+  template <int A = Axis, std::enable_if_t<A != 0, int> = 0>
   DP_HOST_INLINE void four_along_x(int i, int j, int k) const {
     using L = FourLanes;
-    if (Axis == 0 && !(i >= 1 && i + 4 < out.n[0] && 2 * i + 8 < in.n[0])) {
-      for (int l = 0; l < L::kCount; ++l) (*this)(i + l, j, k);
-      return;
-    }
     const RestrictionAxis a = axis_at(i, j, k);
     L::Value v[4];
-    if constexpr (Axis == 0) {
-      const float* f = source + in.index(2 * i - 1, j, k);
-      const L::Value lo = L::load_row(f), mid = L::load_row(f + 4), hi = L::load_row(f + 6);
-      v[0] = L::pick<0, 2, 4, 6>(lo, mid);
-      v[1] = L::pick<1, 3, 5, 7>(lo, mid);
-      v[2] = L::pick<2, 4, 5, 6>(lo, L::pick<0, 2, 6, 7>(mid, hi));
-      v[3] = L::pick<3, 4, 5, 6>(lo, L::pick<1, 3, 7, 7>(mid, hi));
-    } else {
-      for (int d = 0; d < 4; ++d) v[d] = L::load_row(source + index_along<Axis>(in, i, j, k, a.fine[d]));
-    }
+    for (int d = 0; d < 4; ++d) v[d] = L::load_row(source + index_along<Axis>(in, i, j, k, a.fine[d]));
     const L::Value sum = a.sum(v[0], v[1], v[2], v[3]);
     const std::size_t c = out.index(i, j, k);
     if constexpr (Last) L::store(target + c, L::keep_where(0.5f * sum, coarse_unknown + c));
     else L::store(target + c, sum);
   }
   bool lanes_fit() const { return true; }
+
+  // Along x, a whole coarse row n long (CpuExec::parallel_for_3d): coarse
+  // cells 1 .. n - 2 read fine cells 2i - 1 .. 2i + 2, all inside, with the
+  // one weight set 1/4, 3/4, 3/4, 1/4, in a loop g++ vectorises; the two
+  // end cells, whose weights depend on the walls, go one by one.
+  template <int A = Axis, std::enable_if_t<A == 0, int> = 0>
+  DP_HOST_INLINE void whole_row(int n, int j, int k) const {
+    static_assert(!Last, "the last pass runs along z");
+    (*this)(0, j, k);
+    if (n > 2) {
+      const RestrictionAxis a = axis_at(1, j, k);
+      restrict_inner_row(source + in.index(0, j, k), target + out.index(0, j, k), n - 1, a.weight);
+    }
+    if (n > 1) (*this)(n - 1, j, k);
+  }
 #endif
 
  private:
@@ -281,6 +282,14 @@ struct RestrictAlong {
     const int at[3] = {i, j, k};
     return RestrictionAxis::at(at[Axis], in.n[Axis], out.n[Axis], faces.open(Axis, 0), faces.open(Axis, 1));
   }
+#if !defined(__CUDA_ARCH__)
+  // out[i] for i = 1 .. end - 1 from fine row `fine`, as RestrictionAxis::sum
+  // orders the terms; restrict parameters, so no overlap test per call.
+  DP_HOST_INLINE static void restrict_inner_row(const float* __restrict fine, float* __restrict out, int end, const float* w) {
+    const float w0 = w[0], w1 = w[1], w2 = w[2], w3 = w[3];
+    for (int i = 1; i < end; ++i) out[i] = (w0 * fine[2 * i - 1] + w3 * fine[2 * i + 2]) + (w1 * fine[2 * i] + w2 * fine[2 * i + 1]);
+  }
+#endif
 };
 
 // The two coarse cells fine cell `fine` takes a share of along one axis, near

@@ -119,33 +119,40 @@ TEST(air_Multigrid, RestrictionIsHalfTheTransposeOfProlongation) {
   }
 }
 
-// The transfer passes four points at a time, as CpuExec::parallel_for_3d
-// runs them (four_along_x), against one point at a time, bit for bit. The
-// boxes' rows hold groups away from the ends, which read every other fine
-// cell (restriction along x) or pair coarse cells (prolongation along x)
-// as shuffled lanes, and groups at the ends, which take the one-point path;
-// every open-face mask of x changes the end weights; the last passes mask
-// by the unknowns and prolongation adds to what is there.
+// The transfer passes as CpuExec::parallel_for_3d runs them, four points
+// at a time (four_along_x) or restriction along x a whole row at a time
+// (whole_row), in both of the launcher's copies, against one point at a
+// time, bit for bit. The boxes' rows hold groups away from the ends, which
+// read every other fine cell (restriction along x) or pair coarse cells
+// (prolongation along x) as shuffled lanes, and the ends, which take the
+// one-point path; every open-face mask of x changes the end weights; the
+// last passes mask by the unknowns and prolongation adds to what is there.
 template <class MakePass>
-void expect_pass_four_lanes_equal_one(const Box& out, const std::vector<float>& start, const MakePass& make_pass,
-                                      const char* what) {
-  std::vector<float> one = start, four = start;
+void expect_pass_rows_equal_one(const Box& out, const std::vector<float>& start, const MakePass& make_pass,
+                                const char* what) {
+  std::vector<float> one = start;
   const auto by_one = make_pass(one.data());
   for (int k = 0; k < out.n[2]; ++k)
     for (int j = 0; j < out.n[1]; ++j)
       for (int i = 0; i < out.n[0]; ++i) by_one(i, j, k);
-  const auto by_four = make_pass(four.data());
-  static_assert(TakesFourAlongX<decltype(by_four)>::value, "the pass has a four-lane path");
-  test::air_exec().parallel_for_3d(out.n[0], out.n[1], out.n[2], by_four);
-  ASSERT_EQ(one.size(), out.size());
-  for (std::size_t n = 0; n < one.size(); ++n)
-    ASSERT_EQ(std::memcmp(&one[n], &four[n], sizeof(float)), 0) << what << ", point " << n << ": " << one[n] << " vs " << four[n];
+  for (const CpuIsa isa : {CpuIsa::Baseline, CpuIsa::Avx2}) {
+    if (isa == CpuIsa::Avx2 && !cpu_runs_avx2_copy()) continue;
+    std::vector<float> rows = start;
+    const auto by_rows = make_pass(rows.data());
+    static_assert(TakesFourAlongX<decltype(by_rows)>::value || TakesWholeRows<decltype(by_rows)>::value,
+                  "the pass has a lane or row path");
+    CpuExec(1, isa).parallel_for_3d(out.n[0], out.n[1], out.n[2], by_rows);
+    ASSERT_EQ(one.size(), out.size());
+    for (std::size_t n = 0; n < one.size(); ++n)
+      ASSERT_EQ(std::memcmp(&one[n], &rows[n], sizeof(float)), 0)
+          << what << " (" << cpu_isa_name(isa) << "), point " << n << ": " << one[n] << " vs " << rows[n];
+  }
 }
 
-TEST(air_Multigrid, TransferPassesFourLanesEqualOneLaneBitForBit) {
+TEST(air_Multigrid, TransferPassesInRowsAndLanesEqualOnePointBitForBit) {
   std::mt19937 rng(47);
   std::uniform_real_distribution<float> u(-1, 1);
-  for (const Box fine : {Box{{21, 9, 6}}, Box{{24, 10, 9}}, Box{{36, 7, 8}}})
+  for (const Box fine : {Box{{2, 5, 6}}, Box{{3, 9, 6}}, Box{{5, 8, 7}}, Box{{21, 9, 6}}, Box{{24, 10, 9}}, Box{{36, 7, 8}}})
     for (const unsigned mask : {0u, 0x1u, 0x2u, 0x3u, 0x3cu}) {
       const Box coarse{{(fine.n[0] + 1) / 2, (fine.n[1] + 1) / 2, (fine.n[2] + 1) / 2}};
       const TransferBoxes boxes{fine, coarse};
@@ -165,22 +172,22 @@ TEST(air_Multigrid, TransferPassesFourLanesEqualOneLaneBitForBit) {
       for (auto& b : fine_unknown) b = u(rng) > -0.5f;
       const std::vector<float> zero_coarse_x(boxes.coarse_x().size()), zero_coarse_xy(boxes.coarse_xy().size()),
           zero_coarse(coarse.size()), zero_fine_x(boxes.fine_x().size()), zero_fine_xy(boxes.fine_xy().size());
-      expect_pass_four_lanes_equal_one(boxes.coarse_x(), zero_coarse_x, [&](float* t) {
+      expect_pass_rows_equal_one(boxes.coarse_x(), zero_coarse_x, [&](float* t) {
         return RestrictAlong<0, false>{fine, boxes.coarse_x(), faces, fine_r.data(), t, nullptr};
       }, "restriction along x");
-      expect_pass_four_lanes_equal_one(boxes.coarse_xy(), zero_coarse_xy, [&](float* t) {
+      expect_pass_rows_equal_one(boxes.coarse_xy(), zero_coarse_xy, [&](float* t) {
         return RestrictAlong<1, false>{boxes.coarse_x(), boxes.coarse_xy(), faces, coarse_x.data(), t, nullptr};
       }, "restriction along y");
-      expect_pass_four_lanes_equal_one(coarse, zero_coarse, [&](float* t) {
+      expect_pass_rows_equal_one(coarse, zero_coarse, [&](float* t) {
         return RestrictAlong<2, true>{boxes.coarse_xy(), coarse, faces, coarse_xy.data(), t, coarse_unknown.data()};
       }, "restriction along z, last");
-      expect_pass_four_lanes_equal_one(boxes.fine_x(), zero_fine_x, [&](float* t) {
+      expect_pass_rows_equal_one(boxes.fine_x(), zero_fine_x, [&](float* t) {
         return ProlongAlong<0, false>{coarse, boxes.fine_x(), faces, coarse_e.data(), t, nullptr, nullptr};
       }, "prolongation along x");
-      expect_pass_four_lanes_equal_one(boxes.fine_xy(), zero_fine_xy, [&](float* t) {
+      expect_pass_rows_equal_one(boxes.fine_xy(), zero_fine_xy, [&](float* t) {
         return ProlongAlong<1, false>{boxes.fine_x(), boxes.fine_xy(), faces, fine_x.data(), t, nullptr, nullptr};
       }, "prolongation along y");
-      expect_pass_four_lanes_equal_one(fine, fine_before, [&](float* t) {
+      expect_pass_rows_equal_one(fine, fine_before, [&](float* t) {
         return ProlongAlong<2, true>{boxes.fine_xy(), fine, faces, fine_xy.data(), t, scale.data(), fine_unknown.data()};
       }, "prolongation along z, last");
     }
