@@ -2,6 +2,7 @@
 // Uniform grid neighbour search (Green 2009): cell size = support radius h,
 // particles sorted by linear cell index, each cell's range [begin, end) in
 // the sorted order. A query visits the 27 cells around a position.
+#include <algorithm>
 #include <cstdint>
 
 #include "backend/host_device.h"
@@ -99,12 +100,20 @@ struct CellBegins {
   }
   DP_HD void operator()(std::size_t c) const { cell_begin[c] = first_at_or_after(static_cast<std::uint32_t>(c), 0); }
   // Cells begin .. end - 1 at once (CpuExec): one search, then a walk along
-  // the keys, as many steps as the range has cells and particles.
+  // the runs of equal keys. Every cell from the one after the last run's
+  // key up to the next run's key begins where that run does, so each gap
+  // of empty cells is one fill (a stream of stores, where a step per cell
+  // took 3.6 ms a step on the air benchmark's 4M mostly empty cells).
   DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
     std::uint32_t first = first_at_or_after(static_cast<std::uint32_t>(begin), 0);
-    for (std::size_t c = begin; c < end; ++c) {
-      while (first < n && sorted_key[first] < c) ++first;
-      cell_begin[c] = first;
+    for (std::size_t c = begin; c < end;) {
+      const std::size_t last = first < n && sorted_key[first] < end ? sorted_key[first] : end - 1;
+      std::fill(cell_begin + c, cell_begin + last + 1, first);
+      c = last + 1;
+      if (first < n) {
+        const std::uint32_t run = sorted_key[first];
+        while (first < n && sorted_key[first] == run) ++first;
+      }
     }
   }
 };
