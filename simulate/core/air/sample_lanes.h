@@ -57,14 +57,6 @@ struct OneLane {
 };
 
 #if !defined(__CUDA_ARCH__)
-// N consecutive points (4 or 8), as GCC/Clang vector extensions, in host
-// code only (nvcc's host pass takes them too, so the CPU backend's functors
-// are the same in .cu and .cpp files): FourLanes, SSE registers, in both of
-// the launcher's copies; EightLanes, AVX registers, in its AVX2 copy only
-// (cpu_isa.h), which is where it calls eight_along_x. Every member is
-// forced inline, so that it takes the instruction set of the loop it runs
-// in. Lattice positions are 32-bit lanes: the CPU launcher takes this path
-// only for lattices of fewer than 2^31 points (lanes_fit).
 // Registers of N floats, N ints, N / 2 doubles (g++ takes no vector_size
 // that depends on a template parameter).
 template <int N>
@@ -82,6 +74,14 @@ struct LaneRegisters<8> {
   typedef double Pairs __attribute__((vector_size(32)));
 };
 
+// N consecutive points (4 or 8), as GCC/Clang vector extensions, in host
+// code only (nvcc's host pass takes them too, so the CPU backend's functors
+// are the same in .cu and .cpp files): FourLanes, SSE registers, in both of
+// the launcher's copies; EightLanes, AVX registers, in its AVX2 copy only
+// (cpu_isa.h), which is where it calls eight_along_x. Every member is
+// forced inline, so that it takes the instruction set of the loop it runs
+// in. Lattice positions are 32-bit lanes: the CPU launcher takes this path
+// only for lattices of fewer than 2^31 points (lanes_fit).
 template <int N>
 struct VectorLanes {
   using Real = typename LaneRegisters<N>::Real;
