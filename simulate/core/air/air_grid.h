@@ -237,10 +237,10 @@ class AirGrid {
     const std::size_t n = inflow_cells_.size();
     if (n == 0) return;
     const std::uint32_t* cells = Exec::ptr(inflow_cells_);
-    ledger_.inflow_gain += exec.sum(n, InflowVaporGain{cells, Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(vapor_),
-                                                       static_cast<double>(grid_.cell_volume())});
-    exec.parallel_for(n, ApplyInflowScalars{cells, Exec::ptr(inflow_of_), Exec::ptr(inflows_), settings_.ambient_temperature,
-                                            Exec::ptr(vapor_), Exec::ptr(temperature_excess_)});
+    ledger_.inflow_gain += exec.sum(n, at_keys(cells, InflowVaporGain{Exec::ptr(inflow_of_), Exec::ptr(inflows_), Exec::ptr(vapor_),
+                                                                      static_cast<double>(grid_.cell_volume())}));
+    exec.parallel_for(n, at_keys(cells, ApplyInflowScalars{Exec::ptr(inflow_of_), Exec::ptr(inflows_), settings_.ambient_temperature,
+                                                           Exec::ptr(vapor_), Exec::ptr(temperature_excess_)}));
   }
 
   // Every face that is not free takes its prescribed velocity; which faces

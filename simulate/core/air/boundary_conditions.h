@@ -164,30 +164,25 @@ inline std::vector<std::uint32_t> inflow_cells_of(const std::vector<std::uint8_t
   return cells;
 }
 
-// The vapor mass (kg) the t-th inflow cell gains when its vapor is reset to
-// the prescribed value: the inflow's contribution to the mass ledger.
+// The vapor mass (kg) inflow cell c gains when its vapor is reset to the
+// prescribed value: the inflow's contribution to the mass ledger. Run over
+// inflow_cells_of's list (at_keys).
 struct InflowVaporGain {
-  const std::uint32_t* inflow_cells;
   const std::uint8_t* inflow_of_cell;
   const AirInflow* inflows;
   const double* vapor;
   double cell_volume;
-  DP_HD double operator()(std::size_t t) const {
-    const std::uint32_t c = inflow_cells[t];
-    return (inflows[inflow_of_cell[c] - 1].vapor - vapor[c]) * cell_volume;
-  }
+  DP_HD double operator()(std::uint32_t c) const { return (inflows[inflow_of_cell[c] - 1].vapor - vapor[c]) * cell_volume; }
 };
 
-// The t-th inflow cell takes its inflow's vapor and temperature.
+// Inflow cell c takes its inflow's vapor and temperature; over the same list.
 struct ApplyInflowScalars {
-  const std::uint32_t* inflow_cells;
   const std::uint8_t* inflow_of_cell;
   const AirInflow* inflows;
   float ambient_temperature;
   double* vapor;
   float* temperature_excess;  // T - T_amb
-  DP_HD void operator()(std::size_t t) const {
-    const std::uint32_t c = inflow_cells[t];
+  DP_HD void operator()(std::uint32_t c) const {
     const AirInflow& in = inflows[inflow_of_cell[c] - 1];
     vapor[c] = in.vapor;
     temperature_excess[c] = in.temperature - ambient_temperature;

@@ -41,12 +41,13 @@ struct ScatterRuns {
   }
 };
 
-// f(key) for each listed key: a per-key kernel restricted to a list.
+// f(key) for each listed key: a per-key kernel, or the values of a sum,
+// restricted to a list.
 template <class F>
 struct AtKeys {
   const std::uint32_t* key;
   F f;
-  DP_HD void operator()(std::size_t r) const { f(key[r]); }
+  DP_HD auto operator()(std::size_t r) const { return f(key[r]); }
 };
 template <class F>
 AtKeys<F> at_keys(const std::uint32_t* key, const F& f) { return AtKeys<F>{key, f}; }

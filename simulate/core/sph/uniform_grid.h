@@ -89,8 +89,8 @@ struct CellBegins {
   std::uint32_t n;
   std::uint32_t* cell_begin;
 
-  DP_HD std::uint32_t first_at_or_after(std::uint32_t c, std::uint32_t low) const {
-    std::uint32_t high = n;
+  DP_HD std::uint32_t first_at_or_after(std::uint32_t c) const {
+    std::uint32_t low = 0, high = n;
     while (low < high) {
       const std::uint32_t mid = low + (high - low) / 2;
       if (sorted_key[mid] < c) low = mid + 1;
@@ -98,14 +98,14 @@ struct CellBegins {
     }
     return low;
   }
-  DP_HD void operator()(std::size_t c) const { cell_begin[c] = first_at_or_after(static_cast<std::uint32_t>(c), 0); }
+  DP_HD void operator()(std::size_t c) const { cell_begin[c] = first_at_or_after(static_cast<std::uint32_t>(c)); }
   // Cells begin .. end - 1 at once (CpuExec): one search, then a walk along
   // the runs of equal keys. Every cell from the one after the last run's
   // key up to the next run's key begins where that run does, so each gap
   // of empty cells is one fill (a stream of stores, where a step per cell
   // took 3.6 ms a step on the air benchmark's 4M mostly empty cells).
   DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
-    std::uint32_t first = first_at_or_after(static_cast<std::uint32_t>(begin), 0);
+    std::uint32_t first = first_at_or_after(static_cast<std::uint32_t>(begin));
     for (std::size_t c = begin; c < end;) {
       const std::size_t last = first < n && sorted_key[first] < end ? sorted_key[first] : end - 1;
       std::fill(cell_begin + c, cell_begin + last + 1, first);
