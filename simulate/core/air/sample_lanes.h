@@ -133,9 +133,9 @@ struct VectorLanes {
   // Each lane's at[d] into `first` and at[d + 1] into `second`.
   DP_HOST_INLINE static void gather_pair(const float* const* at, std::ptrdiff_t d, Value& first, Value& second) {
     typename LaneRegisters<N>::Pairs low, high;  // lanes 0 .. N/2 - 1, and the rest
-    for (int l = 0; l < N / 2; ++l) {
-      std::memcpy(&low[l], at[l] + d, sizeof(double));
-      std::memcpy(&high[l], at[N / 2 + l] + d, sizeof(double));
+    for (int l = 0; l < N / 2; ++l) {  // clang takes no address of a vector's lane
+      low[l] = two_floats(at[l] + d);
+      high[l] = two_floats(at[N / 2 + l] + d);
     }
     first = every_other<0>(reinterpret_cast<Value>(low), reinterpret_cast<Value>(high), std::make_integer_sequence<int, N>{});
     second = every_other<1>(reinterpret_cast<Value>(low), reinterpret_cast<Value>(high), std::make_integer_sequence<int, N>{});
@@ -173,6 +173,12 @@ struct VectorLanes {
     V lanes;
     for (int l = 0; l < N; ++l) lanes[l] = v;
     return lanes;
+  }
+  // p[0] and p[1] as the bits of one double: one 8-byte load.
+  DP_HOST_INLINE static double two_floats(const float* p) {
+    double both;
+    std::memcpy(&both, p, sizeof both);
+    return both;
   }
   template <int... L>
   DP_HOST_INLINE static Int lane_numbers(std::integer_sequence<int, L...>) { return Int{L...}; }
