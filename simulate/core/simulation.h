@@ -163,10 +163,6 @@ class Simulation {
   virtual void restore(const SimulationState& state) = 0;
 };
 
-// Throws std::invalid_argument naming the problem when the air grid's cells
-// are not larger than two support radii (paper Sec. 4.2).
-void check_air_cell_size(const SimulationSetup& setup);
-
 // Throws std::runtime_error naming the reason when the device is unusable.
 std::unique_ptr<Simulation> make_simulation(const ExecutionConfig& exec, const SimulationSetup& setup);
 

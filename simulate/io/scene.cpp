@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "air/air_cell_size.h"
 #include "air/vapor_pressure.h"
 #include "simulation.h"
 
