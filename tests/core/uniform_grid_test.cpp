@@ -96,6 +96,39 @@ TEST(UniformGrid, NeighbourWalkVisitsExactlyTheParticlesOfThe27Cells) {
   }
 }
 
+// One grid rebuilt for a sequence of particle sets, as a simulation does
+// every step: the CPU backend rewrites only the cells whose begin can have
+// changed, so every entry is checked after each set against a search of
+// that set's keys alone. The sets move the lowest and highest keys down
+// and up, change the count, and empty the grid.
+TEST(UniformGrid, RebuiltGridsRangesMatchEachNewSetOfKeys) {
+  const std::vector<Vec3> base = clustered_points(13);
+  const auto moved = [&](Vec3 by, std::size_t count) {
+    std::vector<Vec3> p(base.begin(), base.begin() + count);
+    for (Vec3& x : p) x = x + by;
+    return p;
+  };
+  const std::vector<std::vector<Vec3>> sets = {
+      moved({0, 0, 0}, 6000),        moved({0, 0, 0.1f}, 6000),  moved({0, 0, -0.15f}, 6000),
+      moved({0.02f, 0, 0}, 6000),    moved({0, 0, 0.3f}, 5000),  moved({0, 0, 0.3f}, 5000),
+      {},                            moved({0, 0.1f, 0}, 9200),  moved({0, -0.1f, 0.2f}, 9200),
+      moved({0, -0.1f, 0.2f}, 9199), {Vec3{0.5f, 0.5f, 0.5f}},    moved({0, 0, 0}, 6000)};
+  for (int threads : {1, 2}) {
+    CpuExec exec(threads);
+    ParticleGrid<CpuExec> grid;
+    grid.grid = kGrid;
+    for (std::size_t s = 0; s < sets.size(); ++s) {
+      grid.sort(exec, sets[s]);
+      grid.find_ranges(exec);
+      const std::vector<std::uint32_t>& key = grid.key;
+      ASSERT_EQ(grid.cell_begin.size(), kGrid.cell_count() + std::size_t{1});
+      for (std::uint32_t c = 0; c <= kGrid.cell_count(); ++c)
+        ASSERT_EQ(grid.cell_begin[c], std::lower_bound(key.begin(), key.end(), c) - key.begin())
+            << "cell " << c << " after set " << s << ", " << threads << " threads";
+    }
+  }
+}
+
 TEST(UniformGrid, NoParticlesGiveEveryCellAnEmptyRange) {
   const Built b = build(2, {}, kGrid);
   for (std::uint32_t begin : b.grid.cell_begin) ASSERT_EQ(begin, 0u);

@@ -189,6 +189,10 @@ class CpuExec {
   // two (and one thread wake-up).
   static constexpr bool kFusesPassesIntoSums = true;
 
+  // Buffers are host memory: the host reads an element without a copy or a
+  // wait (ParticleGrid::find_ranges reads the lowest and highest keys).
+  static constexpr bool kBuffersInHostMemory = true;
+
   explicit CpuExec(int threads, CpuIsa isa = detect_cpu_isa()) : threads_(threads > 0 ? threads : 1), isa_(isa) {
     omp_set_num_threads(threads_);
   }

@@ -179,6 +179,10 @@ class CudaExec {
   // would run on a thirty-second of the threads a pass of its own gets.
   static constexpr bool kFusesPassesIntoSums = false;
 
+  // Buffers are device memory: reading one element on the host is a copy
+  // and a wait for the stream.
+  static constexpr bool kBuffersInHostMemory = false;
+
   explicit CudaExec(int device = 0) {
     cuda_detail::check(cudaSetDevice(device), "cudaSetDevice");
     stream_ = std::make_shared<cuda_detail::Stream>();

@@ -1,6 +1,8 @@
 #pragma once
 // A particle set sorted into a UniformGrid: keys, stable sort, cell ranges.
+#include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #include "sph/uniform_grid.h"
 
@@ -26,15 +28,49 @@ struct ParticleGrid {
 
   // Cell ranges of the sorted keys. Green (2009) finds only non-empty
   // cells' ranges; here empty cells have one too, which lets a query walk a
-  // row of cells as one run.
+  // row of cells as one run. Where the host reads the keys for free (the
+  // CPU backend), only cells whose begin can have changed since the last
+  // call are written: each entry depends on the sorted keys alone, every
+  // cell up to the lowest key begins at 0 and every cell past the highest
+  // at n. For a small liquid body in a large domain (the Drop: 1.2K
+  // particles, 2.2M cells) that is a few slabs of cells instead of all.
   void find_ranges(const Exec& exec) {
-    const std::size_t cells = grid.cell_count();
-    cell_begin.resize(cells + 1);
-    exec.parallel_for(cells + 1, CellBegins{Exec::ptr(key), static_cast<std::uint32_t>(key.size()), Exec::ptr(cell_begin)});
+    const std::uint32_t cells = grid.cell_count();
+    const std::uint32_t n = static_cast<std::uint32_t>(key.size());
+    if (cell_begin.size() != std::size_t{cells} + 1) {
+      cell_begin.resize(std::size_t{cells} + 1);
+      written_.reset();
+    }
+    CellSpan span{0, cells};
+    if constexpr (Exec::kBuffersInHostMemory) span = cells_to_rewrite(cells, n);
+    exec.parallel_for(std::size_t{span.last} - span.first + 1,
+                      CellBegins{Exec::ptr(key), n, Exec::ptr(cell_begin), span.first});
   }
 
   GridView view(const typename Exec::template Buffer<Vec3>& sorted_position) const {
     return GridView{grid, Exec::ptr(cell_begin), Exec::ptr(cell_begin) + 1, Exec::ptr(sorted_position)};
+  }
+
+ private:
+  struct CellSpan {
+    std::uint32_t first, last;  // inclusive
+  };
+  // The sorted keys at the last find_ranges: cells up to `lowest` began at
+  // 0, cells past `highest` at `count`. No keys: every cell began at 0.
+  struct KeyExtent {
+    std::uint32_t lowest, highest, count;
+  };
+  std::optional<KeyExtent> written_;
+
+  CellSpan cells_to_rewrite(std::uint32_t cells, std::uint32_t n) {
+    const KeyExtent now = n ? KeyExtent{key[0], key[n - 1], n} : KeyExtent{cells, cells, 0};
+    CellSpan span{0, cells};
+    if (written_) {
+      span.first = std::min(written_->lowest, now.lowest);
+      if (written_->count == now.count) span.last = std::max(written_->highest, now.highest);
+    }
+    written_ = now;
+    return span;
   }
 };
 

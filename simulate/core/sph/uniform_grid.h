@@ -80,14 +80,16 @@ struct ComputeCellKeys {
 
 // cell_begin[c] = the first sorted index whose key is c or more, n where
 // there is none: cell c's range begins there, and cell c - 1's ends there.
-// Written for cells 0 .. cell_count() (one past the last cell), each entry
-// by its own search, so no count has to be cleared and scanned over the
-// whole grid first (a domain of millions of mostly empty cells made that
-// the largest part of a step's neighbour search).
+// Element i of a pass is cell first_cell + i, up to cell_count() (one past
+// the last cell), each entry by its own search, so no count has to be
+// cleared and scanned over the whole grid first (a domain of millions of
+// mostly empty cells made that the largest part of a step's neighbour
+// search).
 struct CellBegins {
   const std::uint32_t* sorted_key;
   std::uint32_t n;
   std::uint32_t* cell_begin;
+  std::uint32_t first_cell = 0;
 
   DP_HD std::uint32_t first_at_or_after(std::uint32_t c) const {
     std::uint32_t low = 0, high = n;
@@ -98,13 +100,17 @@ struct CellBegins {
     }
     return low;
   }
-  DP_HD void operator()(std::size_t c) const { cell_begin[c] = first_at_or_after(static_cast<std::uint32_t>(c)); }
-  // Cells begin .. end - 1 at once (CpuExec): one search, then a walk along
-  // the runs of equal keys. Every cell from the one after the last run's
-  // key up to the next run's key begins where that run does, so each gap
-  // of empty cells is one fill (a stream of stores, where a step per cell
-  // took 3.6 ms a step on the air benchmark's 4M mostly empty cells).
-  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
+  DP_HD void operator()(std::size_t i) const {
+    const std::uint32_t c = first_cell + static_cast<std::uint32_t>(i);
+    cell_begin[c] = first_at_or_after(c);
+  }
+  // Elements begin .. end - 1 at once (CpuExec): one search, then a walk
+  // along the runs of equal keys. Every cell from the one after the last
+  // run's key up to the next run's key begins where that run does, so each
+  // gap of empty cells is one fill (a stream of stores, where a step per
+  // cell took 3.6 ms a step on the air benchmark's 4M mostly empty cells).
+  DP_HOST_INLINE void whole_range(std::size_t begin_element, std::size_t end_element) const {
+    const std::size_t begin = first_cell + begin_element, end = first_cell + end_element;
     std::uint32_t first = first_at_or_after(static_cast<std::uint32_t>(begin));
     for (std::size_t c = begin; c < end;) {
       const std::size_t last = first < n && sorted_key[first] < end ? sorted_key[first] : end - 1;
