@@ -17,7 +17,8 @@
 #include <vector>
 
 #include "air/poisson_level.h"
-#include "air/sample_lanes.h"
+#include "air/multigrid_transfers.h"
+#include "backend/host_device.h"
 
 namespace dp {
 
@@ -40,126 +41,6 @@ struct CoarsenUnknown {
   }
 };
 
-// Weight of coarse cell `coarse` in the trilinear prolongation to cell-centred
-// fine cell `fine`, along one axis of `nc` coarse cells: fine cell 2I takes
-// 3/4 of coarse I and 1/4 of I-1, fine 2I+1 3/4 of I and 1/4 of I+1. Where
-// that second coarse cell lies beyond the grid, the error there is taken as
-// the mirror of the near cell's across a closed wall (Neumann: the near cell
-// gets weight 1) and as its negative across an open face (phi = 0 on the
-// face: weight 1/2). Treating it as zero instead, as if every wall were
-// open, halved the correction next to the walls and cost CG twice the
-// iterations (docs/benchmarks.md, air step).
-// Written as selects without branches, so that the transfer passes, which
-// call it per point, still vectorise.
-DP_HD_INLINE float prolongation_weight(int fine, int coarse, int nc, bool open_low, bool open_high) {
-  const int near = fine >> 1;
-  const int far = near + 2 * (fine & 1) - 1;
-  const bool below = far < 0, above = far >= nc;
-  const float edge = (below ? open_low : open_high) ? 0.5f : 1.0f;
-  const float near_weight = (below | above) ? edge : 0.75f;
-  return coarse == near ? near_weight : (coarse == far ? 0.25f : 0.0f);
-}
-
-// prolongation_weight along one axis of the coarse level's grid.
-DP_HD inline float prolongation_weight(const PoissonLevel& coarse, int axis, int fine, int coarse_index) {
-  const int nc = axis == 0 ? coarse.nx : (axis == 1 ? coarse.ny : coarse.nz);
-  return prolongation_weight(fine, coarse_index, nc, coarse.faces.open(axis, 0), coarse.faces.open(axis, 1));
-}
-
-// The near and far coarse cell of fine cell `fine` along one axis (the far
-// one may lie outside the grid).
-DP_HD inline void coarse_pair(int fine, int* pair) {
-  pair[0] = fine >> 1;
-  pair[1] = (fine & 1) ? pair[0] + 1 : pair[0] - 1;
-}
-
-// Calls f(weight, coarse cell index) for each coarse cell inside the grid
-// that fine cell (i, j, k) takes a share of, in a fixed order.
-template <class F>
-DP_HD void for_each_prolongation_term(const PoissonLevel& coarse, int i, int j, int k, const F& f) {
-  int ci[2], cj[2], ck[2];
-  coarse_pair(i, ci);
-  coarse_pair(j, cj);
-  coarse_pair(k, ck);
-  for (int c = 0; c < 2; ++c) {
-    if (ck[c] < 0 || ck[c] >= coarse.nz) continue;
-    const float wk = prolongation_weight(coarse, 2, k, ck[c]);
-    for (int b = 0; b < 2; ++b) {
-      if (cj[b] < 0 || cj[b] >= coarse.ny) continue;
-      const float wjk = wk * prolongation_weight(coarse, 1, j, cj[b]);
-      for (int a = 0; a < 2; ++a) {
-        if (ci[a] < 0 || ci[a] >= coarse.nx) continue;
-        f(wjk * prolongation_weight(coarse, 0, i, ci[a]), coarse.index(ci[a], cj[b], ck[c]));
-      }
-    }
-  }
-}
-
-// Per fine cell, the prolongation's weights over all coarse cells in the grid
-// divided by those over the unknown ones: a coarse cell that is no unknown
-// (all its children rigid or liquid) holds no error, and weighting it in as
-// zero would pull the correction next to an obstacle towards zero, as if the
-// obstacle were open. Scaling the rest up extrapolates instead (Neumann, as
-// the obstacle's faces are); 1 away from obstacles.
-struct ProlongationScale {
-  PoissonLevel fine, coarse;
-  float* scale;
-  DP_HD void operator()(int i, int j, int k) const {
-    float all = 0.0f, unknown = 0.0f;
-    for_each_prolongation_term(coarse, i, j, k, [&](float w, std::size_t c) {
-      all += w;
-      if (coarse.unknown[c]) unknown += w;
-    });
-    // An unknown fine cell's own coarse cell is unknown, so `unknown` > 0 there.
-    scale[fine.index(i, j, k)] = unknown > 0.0f ? all / unknown : 0.0f;
-  }
-
-#if !defined(__CUDA_ARCH__)
-  // Cells 0 .. n - 1 of fine row (j, k) (CpuExec::parallel_for_3d): the
-  // coarse rows the row draws on and their y and z weights are found once;
-  // per cell only the two x terms of each remain. The same terms in the
-  // same order as for_each_prolongation_term, so the same bits.
-  DP_HOST_INLINE void whole_row(int n, int j, int k) const {
-    int cj[2], ck[2];
-    coarse_pair(j, cj);
-    coarse_pair(k, ck);
-    float wjk[4];
-    const std::uint8_t* coarse_row[4];
-    int rows = 0;
-    for (int c = 0; c < 2; ++c) {
-      if (ck[c] < 0 || ck[c] >= coarse.nz) continue;
-      const float wk = prolongation_weight(coarse, 2, k, ck[c]);
-      for (int b = 0; b < 2; ++b) {
-        if (cj[b] < 0 || cj[b] >= coarse.ny) continue;
-        wjk[rows] = wk * prolongation_weight(coarse, 1, j, cj[b]);
-        coarse_row[rows++] = coarse.unknown + coarse.index(0, cj[b], ck[c]);
-      }
-    }
-    const bool open_low = coarse.faces.open(0, 0), open_high = coarse.faces.open(0, 1);
-    float* out = scale + fine.index(0, j, k);
-    for (int i = 0; i < n; ++i) {
-      int ci[2];  // near, then far, as for_each_prolongation_term takes them
-      coarse_pair(i, ci);
-      bool inside[2];
-      float wi[2];
-      for (int a = 0; a < 2; ++a) {
-        inside[a] = ci[a] >= 0 && ci[a] < coarse.nx;
-        wi[a] = prolongation_weight(i, ci[a], coarse.nx, open_low, open_high);
-      }
-      float all = 0.0f, unknown = 0.0f;
-      for (int r = 0; r < rows; ++r)
-        for (int a = 0; a < 2; ++a) {
-          if (!inside[a]) continue;
-          const float w = wjk[r] * wi[a];
-          all += w;
-          if (coarse_row[r][ci[a]]) unknown += w;
-        }
-      out[i] = unknown > 0.0f ? all / unknown : 0.0f;
-    }
-  }
-#endif
-};
-
 // The residual the cycle restricts: scale (b - A x), so that restriction
 // stays the transpose of the scaled prolongation and the cycle symmetric.
 struct ScaledPoissonResidual {
@@ -173,209 +54,6 @@ struct ScaledPoissonResidual {
   }
 };
 
-// The four fine cells 2C-1 .. 2C+2 that coarse cell C gathers from along one
-// axis of nf fine cells, each with the weight the prolongation gives C in
-// it (prolongation_weight), which makes restriction its transpose; a fine
-// cell beyond the grid gets weight 0 and the index of the nearest one, so
-// that every read stays inside.
-struct RestrictionAxis {
-  int fine[4];
-  float weight[4];
-  DP_HD_INLINE static RestrictionAxis at(int coarse, int nf, int nc, bool open_low, bool open_high) {
-    RestrictionAxis a;
-    for (int d = 0; d < 4; ++d) {
-      const int f = 2 * coarse - 1 + d;
-      const bool inside = (f >= 0) & (f < nf);
-      a.fine[d] = f < 0 ? 0 : (f < nf ? f : nf - 1);
-      a.weight[d] = inside ? prolongation_weight(f, coarse, nc, open_low, open_high) : 0.0f;
-    }
-    return a;
-  }
-  // The weighted sum of four values (or of four lanes of each), as a tree:
-  // (w0 v0 + w3 v3) + (w1 v1 + w2 v2).
-  template <class V>
-  DP_HD_INLINE V sum(V v0, V v1, V v2, V v3) const {
-    return (weight[0] * v0 + weight[3] * v3) + (weight[1] * v1 + weight[2] * v2);
-  }
-};
-
-// nx x ny x nz values, x fastest: a level, or one of the boxes a transfer
-// between levels passes through, coarsened or refined one axis at a time.
-struct Box {
-  int n[3];
-  DP_HD std::size_t index(int i, int j, int k) const { return (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i; }
-  DP_HD std::size_t size() const { return static_cast<std::size_t>(n[0]) * n[1] * n[2]; }
-  // This box with `count` values along `axis`.
-  DP_HD Box with(int axis, int count) const {
-    Box b = *this;
-    b.n[axis] = count;
-    return b;
-  }
-};
-
-// Index in `box` of point (i, j, k) with its coordinate along Axis replaced.
-template <int Axis>
-DP_HD_INLINE std::size_t index_along(const Box& box, int i, int j, int k, int along) {
-  return box.index(Axis == 0 ? along : i, Axis == 1 ? along : j, Axis == 2 ? along : k);
-}
-
-// b_coarse = P^T r / 2: the transpose of the prolongation, scaled so that the
-// re-discretised coarse operator (cell size 2 dx, unscaled form) sees the
-// fine residual's level: A_2h ~ 4 dx^2 (-lap), A_h ~ dx^2 (-lap), and P^T
-// sums 8 fine cells. P is separable, so restriction is three passes, along
-// x, y and z, each summing four values as a tree. One pass of 64-term sums
-// per coarse cell took as long as five Jacobi sweeps: each sum a chain of
-// additions waiting on the one before, and no pass that vectorised.
-// `in` has the fine count along Axis, `out` the coarse one; the Last pass
-// writes b, halved, on the coarse unknowns and 0 elsewhere.
-template <int Axis, bool Last>
-struct RestrictAlong {
-  Box in, out;
-  DomainFaces faces;
-  const float* source;
-  float* target;
-  const std::uint8_t* coarse_unknown;  // Last only
-  DP_HD void operator()(int i, int j, int k) const {
-    const RestrictionAxis a = axis_at(i, j, k);
-    const float sum = a.sum(source[index_along<Axis>(in, i, j, k, a.fine[0])], source[index_along<Axis>(in, i, j, k, a.fine[1])],
-                            source[index_along<Axis>(in, i, j, k, a.fine[2])], source[index_along<Axis>(in, i, j, k, a.fine[3])]);
-    const std::size_t c = out.index(i, j, k);
-    if constexpr (Last) target[c] = keep_if(0.5f * sum, coarse_unknown[c] != 0);
-    else target[c] = sum;
-  }
-
-#if !defined(__CUDA_ARCH__)
-  // Coarse points (i .. i + 3, j, k) as SSE lanes (CpuExec::parallel_for_3d),
-  // the same operations in the same order as one by one: along y and z the
-  // four read contiguous fine rows with one weight set.
-  template <int A = Axis, std::enable_if_t<A != 0, int> = 0>
-  DP_HOST_INLINE void four_along_x(int i, int j, int k) const {
-    using L = FourLanes;
-    const RestrictionAxis a = axis_at(i, j, k);
-    L::Value v[4];
-    for (int d = 0; d < 4; ++d) v[d] = L::load_row(source + index_along<Axis>(in, i, j, k, a.fine[d]));
-    const L::Value sum = a.sum(v[0], v[1], v[2], v[3]);
-    const std::size_t c = out.index(i, j, k);
-    if constexpr (Last) L::store(target + c, L::keep_where(0.5f * sum, coarse_unknown + c));
-    else L::store(target + c, sum);
-  }
-  bool lanes_fit() const { return true; }
-
-  // Along x, a whole coarse row n long (CpuExec::parallel_for_3d): coarse
-  // cells 1 .. n - 2 read fine cells 2i - 1 .. 2i + 2, all inside, with the
-  // one weight set 1/4, 3/4, 3/4, 1/4, in a loop g++ vectorises; the two
-  // end cells, whose weights depend on the walls, go one by one.
-  template <int A = Axis, std::enable_if_t<A == 0, int> = 0>
-  DP_HOST_INLINE void whole_row(int n, int j, int k) const {
-    static_assert(!Last, "the last pass runs along z");
-    (*this)(0, j, k);
-    if (n > 2) {
-      const RestrictionAxis a = axis_at(1, j, k);
-      restrict_inner_row(source + in.index(0, j, k), target + out.index(0, j, k), n - 1, a.weight);
-    }
-    if (n > 1) (*this)(n - 1, j, k);
-  }
-#endif
-
- private:
-  DP_HD_INLINE RestrictionAxis axis_at(int i, int j, int k) const {
-    const int at[3] = {i, j, k};
-    return RestrictionAxis::at(at[Axis], in.n[Axis], out.n[Axis], faces.open(Axis, 0), faces.open(Axis, 1));
-  }
-#if !defined(__CUDA_ARCH__)
-  // out[i] for i = 1 .. end - 1 from fine row `fine`, as RestrictionAxis::sum
-  // orders the terms; restrict parameters, so no overlap test per call.
-  DP_HOST_INLINE static void restrict_inner_row(const float* __restrict fine, float* __restrict out, int end, const float* w) {
-    const float w0 = w[0], w1 = w[1], w2 = w[2], w3 = w[3];
-    for (int i = 1; i < end; ++i) out[i] = (w0 * fine[2 * i - 1] + w3 * fine[2 * i + 2]) + (w1 * fine[2 * i] + w2 * fine[2 * i + 1]);
-  }
-#endif
-};
-
-// The two coarse cells fine cell `fine` takes a share of along one axis, near
-// and far, with their prolongation_weight; where the far one lies beyond
-// the grid it gets weight 0 and the near one's index.
-struct ProlongationAxis {
-  int near, far;
-  float w_near, w_far;
-  DP_HD_INLINE static ProlongationAxis at(int fine, int nc, bool open_low, bool open_high) {
-    int pair[2];
-    coarse_pair(fine, pair);
-    const bool far_inside = (pair[1] >= 0) & (pair[1] < nc);
-    return ProlongationAxis{pair[0], far_inside ? pair[1] : pair[0], prolongation_weight(fine, pair[0], nc, open_low, open_high),
-                            far_inside ? prolongation_weight(fine, pair[1], nc, open_low, open_high) : 0.0f};
-  }
-  template <class V>
-  DP_HD_INLINE V lerp(V near_value, V far_value) const { return w_near * near_value + w_far * far_value; }
-};
-
-// x_fine += P e_coarse on the fine unknowns, P scaled by ProlongationScale:
-// like restriction, three separable passes, along x, y, then z. `in` has
-// the coarse count along Axis, `out` the fine one; the Last pass adds to x,
-// +0 where the fine cell is no unknown (x holds +0 there).
-template <int Axis, bool Last>
-struct ProlongAlong {
-  Box in, out;
-  DomainFaces faces;
-  const float* source;
-  float* target;
-  const float* scale;                // Last only
-  const std::uint8_t* fine_unknown;  // Last only
-  DP_HD void operator()(int i, int j, int k) const {
-    const ProlongationAxis a = axis_at(i, j, k);
-    const float e = a.lerp(source[index_along<Axis>(in, i, j, k, a.near)], source[index_along<Axis>(in, i, j, k, a.far)]);
-    const std::size_t f = out.index(i, j, k);
-    if constexpr (Last) target[f] += keep_if(scale[f] * e, fine_unknown[f] != 0);
-    else target[f] = e;
-  }
-
-#if !defined(__CUDA_ARCH__)
-  // Fine points (i .. i + 3, j, k) as SSE lanes, as RestrictAlong's. Along
-  // x, from even i, they take coarse cells i/2 - 1 .. i/2 + 2: near ones
-  // i/2, i/2, i/2 + 1, i/2 + 1 and far ones i/2 - 1, i/2 + 1, i/2, i/2 + 2,
-  // with the weights 3/4 and 1/4 only where all of these lie inside.
-  DP_HOST_INLINE void four_along_x(int i, int j, int k) const {
-    using L = FourLanes;
-    const int c = i / 2;
-    if (Axis == 0 && !(i % 2 == 0 && c >= 1 && c + 2 < in.n[0])) {
-      for (int l = 0; l < L::kCount; ++l) (*this)(i + l, j, k);
-      return;
-    }
-    const ProlongationAxis a = axis_at(i, j, k);
-    L::Value e;
-    if constexpr (Axis == 0) {
-      const L::Value coarse = L::load_row(source + in.index(c - 1, j, k));
-      e = a.lerp(L::pick<1, 1, 2, 2>(coarse, coarse), L::pick<0, 2, 1, 3>(coarse, coarse));
-    } else {
-      e = a.lerp(L::load_row(source + index_along<Axis>(in, i, j, k, a.near)),
-                 L::load_row(source + index_along<Axis>(in, i, j, k, a.far)));
-    }
-    const std::size_t f = out.index(i, j, k);
-    if constexpr (Last) L::store(target + f, L::load_row(target + f) + L::keep_where(L::load_row(scale + f) * e, fine_unknown + f));
-    else L::store(target + f, e);
-  }
-  bool lanes_fit() const { return true; }
-#endif
-
- private:
-  DP_HD_INLINE ProlongationAxis axis_at(int i, int j, int k) const {
-    const int at[3] = {i, j, k};
-    return ProlongationAxis::at(at[Axis], in.n[Axis], faces.open(Axis, 0), faces.open(Axis, 1));
-  }
-};
-
-// The boxes of one transfer between a fine level and the next coarser one.
-struct TransferBoxes {
-  Box fine, coarse;
-  DP_HD Box coarse_x() const { return fine.with(0, coarse.n[0]); }    // restriction, after x
-  DP_HD Box coarse_xy() const { return coarse_x().with(1, coarse.n[1]); }
-  DP_HD Box fine_x() const { return coarse.with(0, fine.n[0]); }      // prolongation, after x
-  DP_HD Box fine_xy() const { return fine_x().with(1, fine.n[1]); }
-  // Two buffers serve both transfers: "wide" holds coarse_x, then fine_xy;
-  // "narrow" coarse_xy, then fine_x.
-  std::size_t wide_size() const { return coarse_x().size() > fine_xy().size() ? coarse_x().size() : fine_xy().size(); }
-  std::size_t narrow_size() const { return coarse_xy().size() > fine_x().size() ? coarse_xy().size() : fine_x().size(); }
-};
 
 struct CopyBytes {
   const std::uint8_t* in;
@@ -394,6 +72,162 @@ struct ClearFloats {
   DP_HD void operator()(std::size_t i) const { x[i] = 0.0f; }
 };
 
+// One level of the hierarchy as the cycle's passes see it: views, with no
+// buffer of its own, so that a GPU kernel can take the levels as a
+// parameter (VCycle::run_below).
+struct CycleLevel {
+  PoissonLevel poisson;
+  float* x;       // the level's correction, padded; null on the finest, which works in the caller's z
+  float* b;       // its right-hand side, the restricted residual; null on the finest (the caller's r)
+  float* tmp;     // padded: the Jacobi sweeps' other vector, and the residual restricted from it
+  const float* prolongation_scale;  // ProlongationScale toward the next coarser level; null on the coarsest
+  float* wide;    // the separable transfers' intermediates (TransferBoxes); null on the coarsest
+  float* narrow;
+};
+
+// How a V-cycle's passes are laid out over launches; the same arithmetic
+// in every layout, so the same bits on one backend.
+struct CycleLayout {
+  // Restriction and prolongation in one pass each (RestrictWhole,
+  // ProlongWhole) instead of three separable ones: on the GPU a pass over
+  // a level of 32^3 or fewer cells is mostly its launch; on the CPU the
+  // separable passes vectorise.
+  bool whole_transfers = false;
+  // Levels of at most this many cells run, with all the coarser ones, in one
+  // call of Exec::in_one_block (one GPU thread block, a barrier between
+  // passes, one launch per V-cycle for them all); 0: none.
+  std::size_t one_block_cells = 0;
+};
+
+// The V-cycle over levels first .. count - 1 of a hierarchy (finest first):
+// on each level but the coarsest, Jacobi sweeps from zero, the scaled
+// residual restricted to the next level, the cycle there, its correction
+// prolonged back and sweeps again; on the coarsest, sweeps only. Written
+// against any executor with parallel_for, parallel_for_3d and
+// parallel_sweeps: the backends' launchers, and a GPU thread block's
+// (BlockExec) inside one kernel.
+struct VCycle {
+  static constexpr int kMaxLevels = 16;        // halving 2^16 cells per axis down to 4
+  static constexpr int kSmoothingSweeps = 2;   // before and after the coarse correction; even (JacobiSweeps)
+  static constexpr int kCoarsestSweeps = 40;   // Jacobi from zero on the coarsest level
+  static constexpr float kOmega = 2.0f / 3.0f;
+  static_assert(kSmoothingSweeps % 2 == 0, "post-smoothing starts from a guess: JacobiSweeps needs an even count");
+
+  CycleLevel levels[kMaxLevels];
+  int count;
+  DomainFaces faces;
+  bool whole_transfers;
+
+  // Solves level first's A x = b approximately; b and x are that level's
+  // (the caller's r and z on the finest).
+  DP_EXEC_TEMPLATE template <class E>
+  DP_HD void run(const E& exec, int first, const float* b, float* x) const {
+    const int c = count - 1;
+    run_above(exec, first, c, b, x, CoarsestSweeps{this, rhs(c, first, b), solution(c, first, x)});
+  }
+
+  // The same with levels `split` .. count - 1 handed to `below(exec)`,
+  // whose result lands in level split's x.
+  DP_EXEC_TEMPLATE template <class E, class Below>
+  DP_HD void run_above(const E& exec, int first, int split, const float* b, float* x, const Below& below) const {
+    for (int l = first; l < split; ++l) descend(exec, l, rhs(l, first, b), solution(l, first, x));
+    below(exec);
+    for (int l = split - 1; l >= first; --l) ascend(exec, l, rhs(l, first, b), solution(l, first, x));
+  }
+
+  // The coarsest level's sweeps, as run_above's `below`.
+  struct CoarsestSweeps {
+    const VCycle* cycle;
+    const float* b;
+    float* x;
+    DP_EXEC_TEMPLATE template <class E>
+    DP_HD void operator()(const E& exec) const { cycle->smooth(exec, cycle->count - 1, b, x, true, kCoarsestSweeps); }
+  };
+
+ private:
+  DP_HD const float* rhs(int l, int first, const float* b) const { return l == first ? b : levels[l].b; }
+  DP_HD float* solution(int l, int first, float* x) const { return l == first ? x : levels[l].x; }
+  DP_HD Box box(int l) const { return Box{{levels[l].poisson.nx, levels[l].poisson.ny, levels[l].poisson.nz}}; }
+
+  // Pre-smoothing on level l and its residual restricted to level l + 1's b.
+  DP_EXEC_TEMPLATE template <class E>
+  DP_HD void descend(const E& exec, int l, const float* b, float* x) const {
+    const CycleLevel& v = levels[l];
+    const CycleLevel& c = levels[l + 1];
+    smooth(exec, l, b, x, true, kSmoothingSweeps);
+    exec.parallel_for(v.poisson.size(), ScaledPoissonResidual{v.poisson, x, b, v.prolongation_scale, v.tmp});
+    const TransferBoxes boxes{box(l), box(l + 1)};
+    if (whole_transfers) {
+      run_pass(exec, boxes.coarse, RestrictWhole{boxes, faces, v.tmp, c.b, c.poisson.unknown});
+      return;
+    }
+    run_pass(exec, boxes.coarse_x(), RestrictAlong<0, false>{boxes.fine, boxes.coarse_x(), faces, v.tmp, v.wide, nullptr});
+    run_pass(exec, boxes.coarse_xy(), RestrictAlong<1, false>{boxes.coarse_x(), boxes.coarse_xy(), faces, v.wide, v.narrow, nullptr});
+    run_pass(exec, boxes.coarse, RestrictAlong<2, true>{boxes.coarse_xy(), boxes.coarse, faces, v.narrow, c.b, c.poisson.unknown});
+  }
+
+  // Level l + 1's correction prolonged into level l's x, and post-smoothing.
+  DP_EXEC_TEMPLATE template <class E>
+  DP_HD void ascend(const E& exec, int l, const float* b, float* x) const {
+    const CycleLevel& v = levels[l];
+    const CycleLevel& c = levels[l + 1];
+    const TransferBoxes boxes{box(l), box(l + 1)};
+    const float* scale = v.prolongation_scale;
+    if (whole_transfers) {
+      run_pass(exec, boxes.fine, ProlongWhole{boxes, faces, c.x, x, scale, v.poisson.unknown});
+    } else {
+      run_pass(exec, boxes.fine_x(), ProlongAlong<0, false>{boxes.coarse, boxes.fine_x(), faces, c.x, v.narrow, nullptr, nullptr});
+      run_pass(exec, boxes.fine_xy(), ProlongAlong<1, false>{boxes.fine_x(), boxes.fine_xy(), faces, v.narrow, v.wide, nullptr, nullptr});
+      run_pass(exec, boxes.fine, ProlongAlong<2, true>{boxes.fine_xy(), boxes.fine, faces, v.wide, x, scale, v.poisson.unknown});
+    }
+    smooth(exec, l, b, x, false, kSmoothingSweeps);
+  }
+
+  // Damped Jacobi sweeps on level l's A x = b; from zero, or (an even number
+  // of sweeps) from the guess in x. The coarsest level's many sweeps are one
+  // launcher call (one GPU launch); on the others each pass is a plain
+  // kernel, which the CPU vectorises.
+  DP_EXEC_TEMPLATE template <class E>
+  DP_HD void smooth(const E& exec, int l, const float* b, float* x, bool from_zero, int sweeps) const {
+    const CycleLevel& v = levels[l];
+    const std::size_t n = v.poisson.size();
+    const JacobiSweeps passes{v.poisson, b, kOmega, from_zero, sweeps, x, v.tmp};
+    if (l + 1 == count) {
+      exec.parallel_sweeps(n, sweeps, passes);
+      return;
+    }
+    for (int s = 0; s < sweeps; ++s) {
+      if (passes.starts_from_zero(s)) exec.parallel_for(n, passes.from_zero_pass(s));
+      else exec.parallel_for(n, passes.sweep_pass(s));
+    }
+  }
+
+  // One pass of a transfer, a point per value it writes.
+  DP_EXEC_TEMPLATE template <class E, class Pass>
+  DP_HD static void run_pass(const E& exec, const Box& out, const Pass& pass) {
+    exec.parallel_for_3d(out.n[0], out.n[1], out.n[2], pass);
+  }
+};
+
+// The cycle from level `first` down, with that level's b and x, on the
+// executor it is handed: a functor for Exec::in_one_block, which holds the
+// cycle by value (a kernel's parameter).
+struct VCycleFrom {
+  VCycle cycle;
+  int first;
+  const float* b;
+  float* x;
+  DP_EXEC_TEMPLATE template <class E>
+  DP_HD void operator()(const E& exec) const { cycle.run(exec, first, b, x); }
+};
+
+// VCycle::run_above's `below` that hands the levels from some level down
+// to Exec::in_one_block.
+struct InOneBlock {
+  VCycleFrom below;
+  template <class Exec>
+  void operator()(const Exec& exec) const { exec.in_one_block(below); }
+};
 
 template <class Exec>
 class MultigridPreconditioner {
@@ -401,11 +235,6 @@ class MultigridPreconditioner {
   using Buffer = typename Exec::template Buffer<T>;
 
  public:
-  static constexpr int kSmoothingSweeps = 2;   // before and after the coarse correction; even (JacobiSweeps)
-  static constexpr int kCoarsestSweeps = 40;   // Jacobi from zero on the coarsest level
-  static constexpr float kOmega = 2.0f / 3.0f;
-  static_assert(kSmoothingSweeps % 2 == 0, "post-smoothing starts from a guess: JacobiSweeps needs an even count");
-
   // Builds the hierarchy's shapes; call `set_unknowns` whenever the cells change.
   void resize(int nx, int ny, int nz, DomainFaces faces) {
     levels_.clear();
@@ -426,7 +255,7 @@ class MultigridPreconditioner {
       }
       levels_.push_back(std::move(l));
       // Halve while every axis keeps at least four cells.
-      if (nx < 8 || ny < 8 || nz < 8) break;
+      if (nx < 8 || ny < 8 || nz < 8 || levels_.size() == static_cast<std::size_t>(VCycle::kMaxLevels)) break;
       levels_.back().prolongation_scale.resize(n);
       const Box fine{{nx, ny, nz}};
       nx = (nx + 1) / 2;
@@ -467,8 +296,24 @@ class MultigridPreconditioner {
   void apply(const Exec& exec, const Buffer<float>& r, PaddedField<Exec>& z) {
     // Never while recording: sizes are set by then.
     if (z.size() != r.size() || z.padding() < padding()) z.resize(r.size(), padding());
-    cycle(exec, 0, Exec::ptr(r), z.ptr());
+    const VCycle cycle = cycle_views();
+    const int split = first_level_in_one_block();
+    if (split >= cycle.count) {
+      cycle.run(exec, 0, Exec::ptr(r), z.ptr());
+      return;
+    }
+    if (split == 0) {
+      exec.in_one_block(VCycleFrom{cycle, 0, Exec::ptr(r), z.ptr()});
+      return;
+    }
+    const CycleLevel& below = cycle.levels[split];
+    cycle.run_above(exec, 0, split, Exec::ptr(r), z.ptr(), InOneBlock{VCycleFrom{cycle, split, below.b, below.x}});
   }
+
+  // How the cycle's passes are laid out: the backend's by default
+  // (layout_); the same arithmetic in every layout.
+  void set_layout(const CycleLayout& layout) { layout_ = layout; }
+  const CycleLayout& layout() const { return layout_; }
 
   // The padding a finest-level field needs (PaddedField).
   std::size_t padding() const { return view(0).slab(); }
@@ -488,58 +333,37 @@ class MultigridPreconditioner {
     Buffer<float> transfer_wide, transfer_narrow;  // likewise: TransferBoxes' intermediates
   };
 
-  // Damped Jacobi sweeps on level l's A x = b; from zero, or (an even number
-  // of sweeps) from the guess in x. The coarsest level's many sweeps are one
-  // launcher call (one GPU launch); on the others each pass is a plain
-  // kernel, which the CPU vectorises.
-  void smooth(const Exec& exec, std::size_t l, const float* b, float* x, bool from_zero, int sweeps) {
-    Level& v = levels_[l];
-    const std::size_t n = v.tmp.size();
-    const JacobiSweeps passes{view(l), b, kOmega, from_zero, sweeps, x, v.tmp.ptr()};
-    if (l + 1 == levels_.size()) {
-      exec.parallel_sweeps(n, sweeps, passes);
-      return;
+  // The hierarchy's levels as the cycle sees them; level 0's b and x are
+  // the caller's.
+  VCycle cycle_views() {
+    VCycle v{};
+    v.count = static_cast<int>(levels_.size());
+    v.faces = faces_;
+    v.whole_transfers = layout_.whole_transfers;
+    for (std::size_t l = 0; l < levels_.size(); ++l) {
+      Level& s = levels_[l];
+      const bool coarsest = l + 1 == levels_.size();
+      v.levels[l] = CycleLevel{view(l), l > 0 ? s.x.ptr() : nullptr, l > 0 ? Exec::ptr(s.b) : nullptr, s.tmp.ptr(),
+                               coarsest ? nullptr : Exec::ptr(s.prolongation_scale), coarsest ? nullptr : Exec::ptr(s.transfer_wide),
+                               coarsest ? nullptr : Exec::ptr(s.transfer_narrow)};
     }
-    for (int s = 0; s < sweeps; ++s) {
-      if (passes.starts_from_zero(s)) exec.parallel_for(n, passes.from_zero_pass(s));
-      else exec.parallel_for(n, passes.sweep_pass(s));
-    }
+    return v;
   }
 
-  // One pass of a transfer, a point per value it writes.
-  template <class Pass>
-  static void run_pass(const Exec& exec, const Pass& pass) {
-    exec.parallel_for_3d(pass.out.n[0], pass.out.n[1], pass.out.n[2], pass);
-  }
-
-  // Solves level l's A x = b approximately: smooth, correct from the
-  // coarser level, smooth again; the coarsest level is only smoothed.
-  void cycle(const Exec& exec, std::size_t l, const float* b, float* x) {
-    Level& v = levels_[l];
-    if (l + 1 == levels_.size()) {
-      smooth(exec, l, b, x, true, kCoarsestSweeps);
-      return;
-    }
-    smooth(exec, l, b, x, true, kSmoothingSweeps);
-    const PoissonLevel p = view(l);
-    const float* scale = Exec::ptr(v.prolongation_scale);
-    exec.parallel_for(v.tmp.size(), ScaledPoissonResidual{p, x, b, scale, v.tmp.ptr()});
-    Level& c = levels_[l + 1];
-    const TransferBoxes boxes{Box{{v.nx, v.ny, v.nz}}, Box{{c.nx, c.ny, c.nz}}};
-    float* wide = Exec::ptr(v.transfer_wide);
-    float* narrow = Exec::ptr(v.transfer_narrow);
-    run_pass(exec, RestrictAlong<0, false>{boxes.fine, boxes.coarse_x(), faces_, v.tmp.ptr(), wide, nullptr});
-    run_pass(exec, RestrictAlong<1, false>{boxes.coarse_x(), boxes.coarse_xy(), faces_, wide, narrow, nullptr});
-    run_pass(exec, RestrictAlong<2, true>{boxes.coarse_xy(), boxes.coarse, faces_, narrow, Exec::ptr(c.b), Exec::ptr(c.unknown)});
-    cycle(exec, l + 1, Exec::ptr(c.b), c.x.ptr());
-    run_pass(exec, ProlongAlong<0, false>{boxes.coarse, boxes.fine_x(), faces_, c.x.ptr(), narrow, nullptr, nullptr});
-    run_pass(exec, ProlongAlong<1, false>{boxes.fine_x(), boxes.fine_xy(), faces_, narrow, wide, nullptr, nullptr});
-    run_pass(exec, ProlongAlong<2, true>{boxes.fine_xy(), boxes.fine, faces_, wide, x, scale, p.unknown});
-    smooth(exec, l, b, x, false, kSmoothingSweeps);
+  // The first level that CycleLayout::one_block_cells puts in one block, or
+  // the level count.
+  int first_level_in_one_block() const {
+    if (layout_.one_block_cells == 0) return static_cast<int>(levels_.size());
+    int l = 0;
+    while (l < static_cast<int>(levels_.size()) && levels_[l].unknown.size() > layout_.one_block_cells) ++l;
+    return l;
   }
 
   std::vector<Level> levels_;
   DomainFaces faces_;
+  // Whole transfers where a pass costs a launch; levels of at most
+  // kOneBlockElements cells in one block.
+  CycleLayout layout_{Exec::kPassCostsALaunch, Exec::kOneBlockElements};
   bool built_ = false;  // set_unknowns has run since resize
 };
 

@@ -193,6 +193,15 @@ class CpuExec {
   // wait (ParticleGrid::find_ranges reads the lowest and highest keys).
   static constexpr bool kBuffersInHostMemory = true;
 
+  // A pass costs its walk over memory, not a launch: two passes that the
+  // CPU vectorises beat one that it does not (the multigrid's separable
+  // transfers, CycleLayout).
+  static constexpr bool kPassCostsALaunch = false;
+
+  // Passes over at most this many elements gain nothing from in_one_block
+  // here: below kSerialBelow they already run on the calling thread.
+  static constexpr std::size_t kOneBlockElements = 0;
+
   explicit CpuExec(int threads, CpuIsa isa = detect_cpu_isa()) : threads_(threads > 0 ? threads : 1), isa_(isa) {
     omp_set_num_threads(threads_);
   }
@@ -261,6 +270,14 @@ class CpuExec {
   template <class F>
   void parallel_sweeps(std::size_t n, int sweeps, const F& f) const {
     for (int s = 0; s < sweeps; ++s) parallel_for(n, [&](std::size_t i) { f(s, i); });
+  }
+
+  // body(exec) for an executor whose passes run in one GPU thread block
+  // there (CudaExec::in_one_block); here that executor is this launcher,
+  // which runs small passes on the calling thread alone anyway.
+  template <class Body>
+  void in_one_block(const Body& body) const {
+    body(*this);
   }
 
   // Stable sort of (keys, values) by key.

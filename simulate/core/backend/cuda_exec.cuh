@@ -104,14 +104,52 @@ struct Min {
   __device__ unsigned long long operator()(unsigned long long a, unsigned long long b) const { return a < b ? a : b; }
 };
 
+}  // namespace cuda_detail
+
+// The launcher interface inside one thread block (CudaExec::in_one_block):
+// every thread of the block calls each method with the same arguments, the
+// threads share the pass's elements, and a barrier ends each pass, so that
+// the next one sees everything this one wrote. For chains of passes over a
+// few thousand elements, which cost a launch each as kernels.
+struct BlockExec {
+  template <class F>
+  __device__ void parallel_for(std::size_t n, const F& f) const {
+    for (std::size_t i = threadIdx.x; i < n; i += blockDim.x) f(i);
+    __syncthreads();
+  }
+  template <class F>
+  __device__ void parallel_for_3d(int nx, int ny, int nz, const F& f) const {
+    const unsigned n = static_cast<unsigned>(nx) * static_cast<unsigned>(ny) * static_cast<unsigned>(nz);
+    for (unsigned p = threadIdx.x; p < n; p += blockDim.x) {
+      const unsigned row = p / static_cast<unsigned>(nx);
+      f(static_cast<int>(p - row * static_cast<unsigned>(nx)), static_cast<int>(row % static_cast<unsigned>(ny)),
+        static_cast<int>(row / static_cast<unsigned>(ny)));
+    }
+    __syncthreads();
+  }
+  template <class F>
+  __device__ void parallel_sweeps(std::size_t n, int sweeps, const F& f) const {
+    for (int s = 0; s < sweeps; ++s) {
+      for (std::size_t i = threadIdx.x; i < n; i += blockDim.x) f(s, i);
+      __syncthreads();
+    }
+  }
+};
+
+namespace cuda_detail {
+
+constexpr unsigned kOneBlockThreads = 1024;
+
+template <class Body>
+__global__ void __launch_bounds__(kOneBlockThreads) in_one_block(Body body) {
+  body(BlockExec{});
+}
+
 // Runs `sweeps` dependent passes of f(sweep, i) over [0, n) in one thread
 // block, with a barrier between passes (n at most one block's threads).
 template <class F>
 __global__ void sweeps_in_one_block(std::size_t n, int sweeps, F f) {
-  for (int s = 0; s < sweeps; ++s) {
-    for (std::size_t i = threadIdx.x; i < n; i += blockDim.x) f(s, i);
-    __syncthreads();
-  }
+  BlockExec{}.parallel_sweeps(n, sweeps, f);
 }
 
 // One pass of a parallel_sweeps call too large for one block.
@@ -182,6 +220,15 @@ class CudaExec {
   // Buffers are device memory: reading one element on the host is a copy
   // and a wait for the stream.
   static constexpr bool kBuffersInHostMemory = false;
+
+  // Each pass is a launch, a few microseconds however small the pass: fewer
+  // passes over the same terms beat separable ones (CycleLayout).
+  static constexpr bool kPassCostsALaunch = true;
+
+  // Chains of passes over at most this many elements run in one thread
+  // block (in_one_block): four per thread, a barrier between passes instead
+  // of a launch.
+  static constexpr std::size_t kOneBlockElements = 4 * cuda_detail::kOneBlockThreads;
 
   explicit CudaExec(int device = 0) {
     cuda_detail::check(cudaSetDevice(device), "cudaSetDevice");
@@ -338,6 +385,14 @@ class CudaExec {
     if (nx <= 0 || ny <= 0 || nz <= 0) return lowest;
     const std::size_t n = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz);
     return max(n, cuda_detail::AtCell<ValueAt>{f, nx, ny}, lowest);
+  }
+
+  // body(BlockExec{}) in one thread block of kOneBlockThreads: one launch
+  // for a whole chain of small passes.
+  template <class Body>
+  void in_one_block(const Body& body) const {
+    cuda_detail::in_one_block<<<1, cuda_detail::kOneBlockThreads, 0, stream()>>>(body);
+    cuda_detail::check(cudaGetLastError(), "kernel launch");
   }
 
   // Calls f(s, i) for s = 0 .. sweeps-1 and every i in [0, n), all of pass

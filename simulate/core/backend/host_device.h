@@ -20,3 +20,13 @@
 // points (four_along_x): inlined into its loops, they are compiled with
 // each loop's instruction set (cpu_isa.h) instead of the baseline's alone.
 #define DP_HOST_INLINE __attribute__((always_inline)) inline
+
+// Before a DP_HD template that calls the methods of an executor it is
+// given: the launchers' are host functions, a GPU thread block's
+// (BlockExec) device functions, and each instantiation is only ever called
+// where its executor's run; nvcc would otherwise warn of every host call.
+#if defined(__CUDACC__)
+#define DP_EXEC_TEMPLATE _Pragma("nv_exec_check_disable")
+#else
+#define DP_EXEC_TEMPLATE
+#endif

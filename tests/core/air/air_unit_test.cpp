@@ -193,6 +193,95 @@ TEST(air_Multigrid, TransferPassesInRowsAndLanesEqualOnePointBitForBit) {
     }
 }
 
+// The one-pass transfers the GPU runs (RestrictWhole, ProlongWhole) against
+// the three separable passes the CPU runs, bit for bit: the same terms in
+// the same order, on boxes of odd and even sizes down to one cell per axis,
+// with every kind of end (closed, open) on each axis, random unknowns and
+// a prolongation that adds to what x holds.
+TEST(air_Multigrid, WholeTransfersEqualSeparablePassesBitForBit) {
+  std::mt19937 rng(53);
+  std::uniform_real_distribution<float> u(-1, 1);
+  auto run = [](const Box& out, const auto& pass) {
+    for (int k = 0; k < out.n[2]; ++k)
+      for (int j = 0; j < out.n[1]; ++j)
+        for (int i = 0; i < out.n[0]; ++i) pass(i, j, k);
+  };
+  int compared = 0;
+  for (const Box fine : {Box{{1, 2, 3}}, Box{{8, 8, 8}}, Box{{9, 5, 7}}, Box{{16, 11, 6}}})
+    for (const unsigned mask : {0u, 0x3u, 0x9u, 0x36u, 0x3fu}) {
+      SCOPED_TRACE(::testing::Message() << "fine " << fine.n[0] << "x" << fine.n[1] << "x" << fine.n[2] << ", open mask " << mask);
+      const Box coarse{{(fine.n[0] + 1) / 2, (fine.n[1] + 1) / 2, (fine.n[2] + 1) / 2}};
+      const TransferBoxes boxes{fine, coarse};
+      DomainFaces faces;
+      faces.open_mask = mask;
+      std::vector<float> r(fine.size()), e(coarse.size()), scale(fine.size()), x(fine.size());
+      std::vector<std::uint8_t> coarse_unknown(coarse.size()), fine_unknown(fine.size());
+      for (float& v : r) v = u(rng);
+      for (float& v : e) v = u(rng);
+      for (float& v : scale) v = 1.0f + 0.5f * u(rng);
+      for (float& v : x) v = u(rng);
+      for (auto& b : coarse_unknown) b = u(rng) > -0.6f;
+      for (auto& b : fine_unknown) b = u(rng) > -0.6f;
+      std::vector<float> wide(boxes.wide_size()), narrow(boxes.narrow_size());
+
+      std::vector<float> separable(coarse.size(), 7.0f), whole(coarse.size(), -7.0f);
+      run(boxes.coarse_x(), RestrictAlong<0, false>{fine, boxes.coarse_x(), faces, r.data(), wide.data(), nullptr});
+      run(boxes.coarse_xy(), RestrictAlong<1, false>{boxes.coarse_x(), boxes.coarse_xy(), faces, wide.data(), narrow.data(), nullptr});
+      run(coarse, RestrictAlong<2, true>{boxes.coarse_xy(), coarse, faces, narrow.data(), separable.data(), coarse_unknown.data()});
+      run(coarse, RestrictWhole{boxes, faces, r.data(), whole.data(), coarse_unknown.data()});
+      ASSERT_EQ(std::memcmp(separable.data(), whole.data(), coarse.size() * sizeof(float)), 0) << "restriction";
+
+      std::vector<float> x_separable = x, x_whole = x;
+      run(boxes.fine_x(), ProlongAlong<0, false>{coarse, boxes.fine_x(), faces, e.data(), narrow.data(), nullptr, nullptr});
+      run(boxes.fine_xy(), ProlongAlong<1, false>{boxes.fine_x(), boxes.fine_xy(), faces, narrow.data(), wide.data(), nullptr, nullptr});
+      run(fine, ProlongAlong<2, true>{boxes.fine_xy(), fine, faces, wide.data(), x_separable.data(), scale.data(), fine_unknown.data()});
+      run(fine, ProlongWhole{boxes, faces, e.data(), x_whole.data(), scale.data(), fine_unknown.data()});
+      ASSERT_EQ(std::memcmp(x_separable.data(), x_whole.data(), fine.size() * sizeof(float)), 0) << "prolongation";
+      EXPECT_NE(x_whole, x);  // the correction was added somewhere
+      ++compared;
+    }
+  EXPECT_EQ(compared, 20);
+}
+
+// Every layout of the V-cycle's passes (CycleLayout: separable or whole
+// transfers; none, some or all of the levels handed to in_one_block, which
+// on the CPU runs them on the calling thread) gives the same z = M^-1 r,
+// bit for bit, on a grid with obstacles and an open face: the layouts move
+// launches, never arithmetic, which is what lets the GPU take its own.
+TEST(air_Multigrid, CycleLayoutsGiveTheSameBits) {
+  CpuExec exec = test::air_exec();
+  const int nx = 40, ny = 36, nz = 33;  // levels of 47520, 6120, 810 and 125 cells
+  const std::size_t n = static_cast<std::size_t>(nx) * ny * nz;
+  std::mt19937 rng(59);
+  std::uniform_real_distribution<float> u(-1, 1);
+  std::vector<std::uint8_t> unknown(n);
+  for (auto& c : unknown) c = u(rng) > -0.8f;
+  std::vector<float> r(n);
+  for (std::size_t c = 0; c < n; ++c) r[c] = unknown[c] ? u(rng) : 0.0f;
+  DomainFaces faces;
+  faces.open_mask = 1u << 3;
+  const auto precondition = [&](const CycleLayout& layout) {
+    MultigridPreconditioner<CpuExec> mg;
+    mg.resize(nx, ny, nz, faces);
+    mg.set_layout(layout);
+    mg.set_unknowns(exec, unknown);
+    PaddedField<CpuExec> z;
+    mg.apply(exec, r, z);
+    EXPECT_EQ(mg.level_count(), 4);
+    return std::vector<float>(z.ptr(), z.ptr() + n);
+  };
+  const std::vector<float> reference = precondition(CycleLayout{});
+  double norm = 0;
+  for (float v : reference) norm += std::fabs(v);
+  EXPECT_GT(norm, 1.0);
+  for (const bool whole : {false, true})
+    for (const std::size_t one_block : {std::size_t{0}, std::size_t{125}, std::size_t{810}, std::size_t{6120}, n}) {
+      const std::vector<float> z = precondition(CycleLayout{whole, one_block});
+      EXPECT_EQ(std::memcmp(z.data(), reference.data(), n * sizeof(float)), 0)
+          << "whole transfers " << whole << ", one block from " << one_block << " cells";
+    }
+}
+
 // The corner search (clamped lower corner and weight) against its
 // definition with floor in double precision, one lane, four and eight: offsets on
 // and next to cell boundaries, beyond both ends, and far beyond (where a
