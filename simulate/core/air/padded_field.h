@@ -2,6 +2,7 @@
 // A vector with room to read past both ends, for stencils that load their
 // neighbours unconditionally (air/poisson_level.h, the vorticity passes).
 #include <cstddef>
+#include <vector>
 
 namespace dp {
 
@@ -22,6 +23,11 @@ class PaddedField {
   std::size_t padding() const { return pad_; }
   T* ptr() { return Exec::ptr(storage_) + pad_; }
   const T* ptr() const { return Exec::ptr(storage_) + pad_; }
+  // The n values, copied to the host.
+  std::vector<T> download() const {
+    const std::vector<T> all = Exec::download(storage_);
+    return std::vector<T>(all.begin() + static_cast<std::ptrdiff_t>(pad_), all.begin() + static_cast<std::ptrdiff_t>(pad_ + n_));
+  }
 
  private:
   typename Exec::template Buffer<T> storage_;

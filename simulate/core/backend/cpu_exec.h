@@ -102,9 +102,9 @@ struct ElementLoop {
   DP_HD_INLINE void operator()(Copy) const {
     if constexpr (TakesWholeRanges<F>::value) {
       f.whole_range(begin, end);
-      return;
+    } else {
+      for (std::size_t i = begin; i < end; ++i) f(i);
     }
-    for (std::size_t i = begin; i < end; ++i) f(i);
   }
 };
 

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "../cuda_test_support.cuh"
+#include "air_test_setups.h"
 #include "air/air_grid.h"
 #include "backend/cpu_exec.h"
 #include "backend/cuda_exec.cuh"
@@ -109,43 +111,25 @@ TEST_F(air_CudaAgreement, TwentyAirStepsMatchTheCpu) {
 TEST_F(air_CudaAgreement, VCycleMatchesTheCpuInEveryLayout) {
   CudaExec gpu(0);
   CpuExec cpu(1);
-  const int nx = 40, ny = 36, nz = 33;
-  const std::size_t n = static_cast<std::size_t>(nx) * ny * nz;
-  std::vector<std::uint8_t> unknown(n);
-  std::vector<float> r(n);
-  unsigned state = 12345u;
-  const auto uniform = [&state] {  // in [0, 1)
-    state = state * 1664525u + 1013904223u;
-    return static_cast<float>(state >> 8) / 16777216.0f;
-  };
-  for (auto& c : unknown) c = uniform() < 0.9f;
-  for (std::size_t c = 0; c < n; ++c) r[c] = unknown[c] ? 2.0f * uniform() - 1.0f : 0.0f;
+  const int n[3] = {40, 36, 33};
+  const std::size_t cells = static_cast<std::size_t>(n[0]) * n[1] * n[2];
+  std::mt19937 rng(61);
+  std::uniform_real_distribution<float> u(-1, 1);
+  std::vector<std::uint8_t> unknown(cells);
+  for (auto& c : unknown) c = u(rng) > -0.8f;
+  std::vector<float> r(cells);
+  for (std::size_t c = 0; c < cells; ++c) r[c] = unknown[c] ? u(rng) : 0.0f;
   DomainFaces faces;
   faces.open_mask = 1u << 3;
-
-  MultigridPreconditioner<CpuExec> reference;
-  reference.resize(nx, ny, nz, faces);
-  reference.set_unknowns(cpu, unknown);
-  PaddedField<CpuExec> z_cpu;
-  reference.apply(cpu, r, z_cpu);
+  const std::vector<float> z_cpu = test::one_v_cycle(cpu, n, faces, CycleLayout{}, unknown, r);
   double zmax = 0;
-  for (std::size_t c = 0; c < n; ++c) zmax = std::fmax(zmax, std::fabs(z_cpu.ptr()[c]));
+  for (float v : z_cpu) zmax = std::fmax(zmax, std::fabs(v));
   ASSERT_GT(zmax, 0.01);
-
-  const thrust::device_vector<std::uint8_t> unknown_gpu(unknown.begin(), unknown.end());
-  const thrust::device_vector<float> r_gpu(r.begin(), r.end());
   const CycleLayout gpus_own{CudaExec::kPassCostsALaunch, CudaExec::kOneBlockElements};
-  for (const CycleLayout layout : {gpus_own, CycleLayout{false, 0}, CycleLayout{true, n}}) {
-    MultigridPreconditioner<CudaExec> mg;
-    mg.resize(nx, ny, nz, faces);
-    mg.set_layout(layout);
-    mg.set_unknowns(gpu, unknown_gpu);
-    PaddedField<CudaExec> z_gpu;
-    mg.apply(gpu, r_gpu, z_gpu);
-    std::vector<float> z(n);
-    ASSERT_EQ(cudaMemcpy(z.data(), z_gpu.ptr(), n * sizeof(float), cudaMemcpyDeviceToHost), cudaSuccess);
+  for (const CycleLayout layout : {gpus_own, CycleLayout{false, 0}, CycleLayout{true, cells}}) {
+    const std::vector<float> z = test::one_v_cycle(gpu, n, faces, layout, unknown, r);
     double difference = 0;
-    for (std::size_t c = 0; c < n; ++c) difference = std::fmax(difference, std::fabs(static_cast<double>(z[c]) - z_cpu.ptr()[c]));
+    for (std::size_t c = 0; c < cells; ++c) difference = std::fmax(difference, std::fabs(static_cast<double>(z[c]) - z_cpu[c]));
     EXPECT_LT(difference, 1e-5 * zmax) << "whole transfers " << layout.whole_transfers << ", one block from "
                                        << layout.one_block_cells << " cells";
   }

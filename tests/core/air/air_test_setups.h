@@ -17,6 +17,25 @@ namespace dp::test {
 // thread-count independence is tested on its own (air_determinism_test).
 inline CpuExec air_exec() { return CpuExec(1); }
 
+// z = M^-1 r, one V-cycle of the pressure preconditioner laid out as
+// `layout`, on backend Exec, for the cells and right-hand side given on the
+// host: the multigrid layouts' checks on either backend.
+template <class Exec>
+std::vector<float> one_v_cycle(const Exec& exec, const int (&n)[3], DomainFaces faces, const CycleLayout& layout,
+                               const std::vector<std::uint8_t>& unknown, const std::vector<float>& r) {
+  typename Exec::template Buffer<std::uint8_t> cells;
+  typename Exec::template Buffer<float> rhs;
+  Exec::upload(cells, unknown);
+  Exec::upload(rhs, r);
+  MultigridPreconditioner<Exec> mg;
+  mg.resize(n[0], n[1], n[2], faces);
+  mg.set_layout(layout);
+  mg.set_unknowns(exec, cells);
+  PaddedField<Exec> z;
+  mg.apply(exec, rhs, z);
+  return z.download();
+}
+
 inline std::string sci(double v) {
   char s[32];
   std::snprintf(s, sizeof s, "%.3e", v);
