@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "../cuda_test_support.cuh"
@@ -111,25 +110,16 @@ TEST_F(air_CudaAgreement, TwentyAirStepsMatchTheCpu) {
 TEST_F(air_CudaAgreement, VCycleMatchesTheCpuInEveryLayout) {
   CudaExec gpu(0);
   CpuExec cpu(1);
-  const int n[3] = {40, 36, 33};
-  const std::size_t cells = static_cast<std::size_t>(n[0]) * n[1] * n[2];
-  std::mt19937 rng(61);
-  std::uniform_real_distribution<float> u(-1, 1);
-  std::vector<std::uint8_t> unknown(cells);
-  for (auto& c : unknown) c = u(rng) > -0.8f;
-  std::vector<float> r(cells);
-  for (std::size_t c = 0; c < cells; ++c) r[c] = unknown[c] ? u(rng) : 0.0f;
-  DomainFaces faces;
-  faces.open_mask = 1u << 3;
-  const std::vector<float> z_cpu = test::one_v_cycle(cpu, n, faces, CycleLayout{}, unknown, r);
+  const test::PoissonProblem p = test::random_poisson_problem(61);
+  const std::vector<float> z_cpu = test::one_v_cycle(cpu, p, CycleLayout{});
   double zmax = 0;
   for (float v : z_cpu) zmax = std::fmax(zmax, std::fabs(v));
   ASSERT_GT(zmax, 0.01);
   const CycleLayout gpus_own{CudaExec::kPassCostsALaunch, CudaExec::kOneBlockElements};
-  for (const CycleLayout layout : {gpus_own, CycleLayout{false, 0}, CycleLayout{true, cells}}) {
-    const std::vector<float> z = test::one_v_cycle(gpu, n, faces, layout, unknown, r);
+  for (const CycleLayout layout : {gpus_own, CycleLayout{false, 0}, CycleLayout{true, p.cells()}}) {
+    const std::vector<float> z = test::one_v_cycle(gpu, p, layout);
     double difference = 0;
-    for (std::size_t c = 0; c < cells; ++c) difference = std::fmax(difference, std::fabs(static_cast<double>(z[c]) - z_cpu[c]));
+    for (std::size_t c = 0; c < p.cells(); ++c) difference = std::fmax(difference, std::fabs(static_cast<double>(z[c]) - z_cpu[c]));
     EXPECT_LT(difference, 1e-5 * zmax) << "whole transfers " << layout.whole_transfers << ", one block from "
                                        << layout.one_block_cells << " cells";
   }

@@ -17,18 +17,40 @@ namespace dp::test {
 // thread-count independence is tested on its own (air_determinism_test).
 inline CpuExec air_exec() { return CpuExec(1); }
 
+// A pressure Poisson problem for the multigrid's checks: a 40 x 36 x 33
+// grid (levels of 47520, 6120, 810 and 125 cells), one cell in ten a wall,
+// the y max face open, and a random right-hand side on the unknowns.
+struct PoissonProblem {
+  int n[3] = {40, 36, 33};
+  DomainFaces faces;
+  std::vector<std::uint8_t> unknown;
+  std::vector<float> r;
+  std::size_t cells() const { return static_cast<std::size_t>(n[0]) * n[1] * n[2]; }
+};
+
+inline PoissonProblem random_poisson_problem(unsigned seed) {
+  PoissonProblem p;
+  p.faces.open_mask = 1u << 3;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1, 1);
+  p.unknown.resize(p.cells());
+  for (auto& c : p.unknown) c = u(rng) > -0.8f;
+  p.r.resize(p.cells());
+  for (std::size_t c = 0; c < p.cells(); ++c) p.r[c] = p.unknown[c] ? u(rng) : 0.0f;
+  return p;
+}
+
 // z = M^-1 r, one V-cycle of the pressure preconditioner laid out as
-// `layout`, on backend Exec, for the cells and right-hand side given on the
-// host: the multigrid layouts' checks on either backend.
+// `layout`, on backend Exec: the multigrid layouts' checks on either
+// backend.
 template <class Exec>
-std::vector<float> one_v_cycle(const Exec& exec, const int (&n)[3], DomainFaces faces, const CycleLayout& layout,
-                               const std::vector<std::uint8_t>& unknown, const std::vector<float>& r) {
+std::vector<float> one_v_cycle(const Exec& exec, const PoissonProblem& p, const CycleLayout& layout) {
   typename Exec::template Buffer<std::uint8_t> cells;
   typename Exec::template Buffer<float> rhs;
-  Exec::upload(cells, unknown);
-  Exec::upload(rhs, r);
+  Exec::upload(cells, p.unknown);
+  Exec::upload(rhs, p.r);
   MultigridPreconditioner<Exec> mg;
-  mg.resize(n[0], n[1], n[2], faces);
+  mg.resize(p.n[0], p.n[1], p.n[2], p.faces);
   mg.set_layout(layout);
   mg.set_unknowns(exec, cells);
   PaddedField<Exec> z;

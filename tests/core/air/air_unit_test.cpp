@@ -250,27 +250,18 @@ TEST(air_Multigrid, WholeTransfersEqualSeparablePassesBitForBit) {
 // launches, never arithmetic, which is what lets the GPU take its own.
 TEST(air_Multigrid, CycleLayoutsGiveTheSameBits) {
   CpuExec exec = test::air_exec();
-  const int n[3] = {40, 36, 33};  // levels of 47520, 6120, 810 and 125 cells
-  const std::size_t cells = static_cast<std::size_t>(n[0]) * n[1] * n[2];
-  std::mt19937 rng(59);
-  std::uniform_real_distribution<float> u(-1, 1);
-  std::vector<std::uint8_t> unknown(cells);
-  for (auto& c : unknown) c = u(rng) > -0.8f;
-  std::vector<float> r(cells);
-  for (std::size_t c = 0; c < cells; ++c) r[c] = unknown[c] ? u(rng) : 0.0f;
-  DomainFaces faces;
-  faces.open_mask = 1u << 3;
+  const test::PoissonProblem p = test::random_poisson_problem(59);
   MultigridPreconditioner<CpuExec> hierarchy;
-  hierarchy.resize(n[0], n[1], n[2], faces);
+  hierarchy.resize(p.n[0], p.n[1], p.n[2], p.faces);
   ASSERT_EQ(hierarchy.level_count(), 4);
-  const std::vector<float> reference = test::one_v_cycle(exec, n, faces, CycleLayout{}, unknown, r);
+  const std::vector<float> reference = test::one_v_cycle(exec, p, CycleLayout{});
   double norm = 0;
   for (float v : reference) norm += std::fabs(v);
   EXPECT_GT(norm, 1.0);
   for (const bool whole : {false, true})
-    for (const std::size_t one_block : {std::size_t{0}, std::size_t{125}, std::size_t{810}, std::size_t{6120}, cells}) {
-      const std::vector<float> z = test::one_v_cycle(exec, n, faces, CycleLayout{whole, one_block}, unknown, r);
-      EXPECT_EQ(std::memcmp(z.data(), reference.data(), cells * sizeof(float)), 0)
+    for (const std::size_t one_block : {std::size_t{0}, std::size_t{125}, std::size_t{810}, std::size_t{6120}, p.cells()}) {
+      const std::vector<float> z = test::one_v_cycle(exec, p, CycleLayout{whole, one_block});
+      EXPECT_EQ(std::memcmp(z.data(), reference.data(), p.cells() * sizeof(float)), 0)
           << "whole transfers " << whole << ", one block from " << one_block << " cells";
     }
 }
