@@ -12,6 +12,11 @@ run $B/dewpoint-bench-dam-break --device cuda --particles 1000000 --steps 10 --w
 # Glass scale (issue #3): 177K liquid + 80K rigid particles, paper Table 1 Glass 174K + 89K; target <= 5 ms per step.
 run $B/dewpoint-bench-dam-break --device cuda --particles 182000 --steps 20 --warmup 5
 run $B/dewpoint-bench-air --device cuda --resolution 64 --steps 20 --warmup 5
+# The pressure V-cycle's layouts on this GPU (docs/benchmarks.md, "Air step on
+# the GPU: one V-cycle, fewer launches"), and where the step's time goes.
+run $B/dewpoint-bench-air --device cuda --resolution 64 --steps 20 --warmup 5 --cycle-layout separable
+run $B/dewpoint-bench-air --device cuda --resolution 64 --steps 20 --warmup 5 --cycle-layout whole
+run $B/dewpoint-bench-air --device cuda --resolution 64 --steps 20 --warmup 5 --parts 1
 run $B/dewpoint-bench-air --device cuda --resolution 128 --steps 10 --warmup 3
 run $B/dewpoint-bench-coupling --device cuda --steps 10
 run $B/dewpoint-bench-coupling --device cuda --rigid-particles 28000 --texels 1024 --liquid 135 --steps 5

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numeric>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +28,7 @@ struct Options {
   int threads = 0;
   int fingerprint = 0;  // 1: print a hash of the air's fields after the run
   int parts = 0;        // 1: also the median time of each part of the step
+  std::string cycle_layout = "backend";  // the pressure V-cycle's layout (cycle_layout_named)
 };
 
 Options parse(int argc, char** argv) {
@@ -38,13 +41,26 @@ Options parse(int argc, char** argv) {
       .add("--threads", "N", &o.threads)
       .add("--fingerprint", "0|1", &o.fingerprint)
       .add("--parts", "0|1", &o.parts)
+      .add("--cycle-layout", "backend|separable|whole", &o.cycle_layout)
       .parse(argc, argv);
   return o;
 }
 
+// The V-cycle layout a --cycle-layout value names: the backend's own, the
+// CPU's three separable passes per transfer with a launch per pass (the
+// GPU's layout before one-pass transfers), or one pass per transfer
+// without the one-block coarse levels. Same values in each; on one GPU they
+// show what each part of the GPU's layout saves.
+std::optional<dp::CycleLayout> cycle_layout_named(const std::string& name) {
+  if (name == "backend") return std::nullopt;
+  if (name == "separable") return dp::CycleLayout{false, 0};
+  if (name == "whole") return dp::CycleLayout{true, 0};
+  throw std::invalid_argument("--cycle-layout: expected backend, separable or whole, found '" + name + "'");
+}
+
 // A 1 m box of n^3 air cells; particles small enough that the cells exceed
 // two support radii (cell = 5 spacings); a jet in from x = 0.
-dp::SimulationSetup jet_box(int n, bool time_parts) {
+dp::SimulationSetup jet_box(int n, bool time_parts, std::optional<dp::CycleLayout> layout) {
   dp::SimulationSetup s;
   const float dx = 1.0f / n;
   s.particle_spacing = dx / 5;
@@ -69,6 +85,7 @@ dp::SimulationSetup jet_box(int n, bool time_parts) {
   a.ambient_vapor = 0.0086;  // 50 % relative humidity at 20 C
   a.vorticity_epsilon = 1.0f;
   a.time_parts = time_parts;
+  a.cycle_layout = layout;
   a.open_face[static_cast<int>(dp::AirFace::XMax)] = true;
   a.open_face[static_cast<int>(dp::AirFace::YMax)] = true;
   dp::AirInflow jet;
@@ -129,7 +146,7 @@ int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   try {
     const dp::ExecutionConfig exec{dp::parse_device(o.device), dp::resolve_thread_count(o.threads)};
-    auto sim = dp::make_simulation(exec, jet_box(o.resolution, o.parts != 0));
+    auto sim = dp::make_simulation(exec, jet_box(o.resolution, o.parts != 0, cycle_layout_named(o.cycle_layout)));
     for (int i = 0; i < o.warmup; ++i) sim->step();
     std::vector<double> grid, iterations, residual;
     std::vector<dp::AirStepSeconds> parts;

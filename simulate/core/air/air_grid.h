@@ -184,6 +184,7 @@ class AirGrid {
     kind_ = static_kind_;
     Exec::upload(inflow_cells_, inflow_cells_of(Exec::download(inflow_of_)));
     pcg_.resize(grid_.nx, grid_.ny, grid_.nz, faces_);
+    if (settings.cycle_layout) pcg_.preconditioner().set_layout(*settings.cycle_layout);
     ledger_.initial = vapor_mass(exec);
   }
 

@@ -3,8 +3,10 @@
 // `simulation.air` section (docs/scene-format.md) is read into this by
 // simulate/io. Temperatures in kelvin, vapor as density in kg/m^3.
 #include <array>
+#include <optional>
 #include <vector>
 
+#include "air/cycle_layout.h"
 #include "math/vec3.h"
 
 namespace dp {
@@ -45,6 +47,10 @@ struct AirSettings {
   // Times each part of the step (AirStepReport::seconds); on the GPU this
   // waits for the device after every part, so it is for benchmarks.
   bool time_parts = false;
+  // The pressure V-cycle's layout over launches; unset: the backend's own.
+  // Every layout computes the same; for benchmarks that compare them on one
+  // GPU (dewpoint-bench-air --cycle-layout).
+  std::optional<CycleLayout> cycle_layout;
 };
 
 }  // namespace dp

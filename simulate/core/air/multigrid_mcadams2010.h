@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "air/poisson_level.h"
+#include "air/cycle_layout.h"
 #include "air/multigrid_transfers.h"
 #include "backend/host_device.h"
 
@@ -83,20 +84,6 @@ struct CycleLevel {
   const float* prolongation_scale;  // ProlongationScale toward the next coarser level; null on the coarsest
   float* wide;    // the separable transfers' intermediates (TransferBoxes); null on the coarsest
   float* narrow;
-};
-
-// How a V-cycle's passes are laid out over launches; the same arithmetic
-// in every layout, so the same bits on one backend.
-struct CycleLayout {
-  // Restriction and prolongation in one pass each (RestrictWhole,
-  // ProlongWhole) instead of three separable ones: on the GPU a pass over
-  // a level of 32^3 or fewer cells is mostly its launch; on the CPU the
-  // separable passes vectorise.
-  bool whole_transfers = false;
-  // Levels of at most this many cells run, with all the coarser ones, in one
-  // call of Exec::in_one_block (one GPU thread block, a barrier between
-  // passes, one launch per V-cycle for them all); 0: none.
-  std::size_t one_block_cells = 0;
 };
 
 // The V-cycle over levels first .. count - 1 of a hierarchy (finest first):
