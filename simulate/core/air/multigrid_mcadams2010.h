@@ -75,7 +75,7 @@ struct ClearFloats {
 
 // One level of the hierarchy as the cycle's passes see it: views, with no
 // buffer of its own, so that a GPU kernel can take the levels as a
-// parameter (VCycle::run_below).
+// parameter (VCycleFrom).
 struct CycleLevel {
   PoissonLevel poisson;
   float* x;       // the level's correction, padded; null on the finest, which works in the caller's z
@@ -289,12 +289,10 @@ class MultigridPreconditioner {
       cycle.run(exec, 0, Exec::ptr(r), z.ptr());
       return;
     }
-    if (split == 0) {
-      exec.in_one_block(VCycleFrom{cycle, 0, Exec::ptr(r), z.ptr()});
-      return;
-    }
-    const CycleLevel& below = cycle.levels[split];
-    cycle.run_above(exec, 0, split, Exec::ptr(r), z.ptr(), InOneBlock{VCycleFrom{cycle, split, below.b, below.x}});
+    // The block's top level works in r and z when it is the finest.
+    const float* block_b = split == 0 ? Exec::ptr(r) : cycle.levels[split].b;
+    float* block_x = split == 0 ? z.ptr() : cycle.levels[split].x;
+    cycle.run_above(exec, 0, split, Exec::ptr(r), z.ptr(), InOneBlock{VCycleFrom{cycle, split, block_b, block_x}});
   }
 
   // How the cycle's passes are laid out: the backend's by default
