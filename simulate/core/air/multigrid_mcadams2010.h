@@ -122,6 +122,8 @@ struct VCycle {
     for (int l = split - 1; l >= first; --l) ascend(exec, l, rhs(l, first, b), solution(l, first, x));
   }
 
+
+ private:
   // The coarsest level's sweeps, as run_above's `below`.
   struct CoarsestSweeps {
     const VCycle* cycle;
@@ -131,7 +133,6 @@ struct VCycle {
     DP_HD void operator()(const E& exec) const { cycle->smooth(exec, cycle->count - 1, b, x, true, kCoarsestSweeps); }
   };
 
- private:
   DP_HD const float* rhs(int l, int first, const float* b) const { return l == first ? b : levels[l].b; }
   DP_HD float* solution(int l, int first, float* x) const { return l == first ? x : levels[l].x; }
   DP_HD Box box(int l) const { return Box{{levels[l].poisson.nx, levels[l].poisson.ny, levels[l].poisson.nz}}; }

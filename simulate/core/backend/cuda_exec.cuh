@@ -104,6 +104,14 @@ struct Min {
   __device__ unsigned long long operator()(unsigned long long a, unsigned long long b) const { return a < b ? a : b; }
 };
 
+// One pass of a parallel_sweeps call: f(sweep, i) as a per-element functor.
+template <class F>
+struct SweepOf {
+  F f;
+  int sweep;
+  __device__ void operator()(std::size_t i) const { f(sweep, i); }
+};
+
 }  // namespace cuda_detail
 
 // The launcher interface inside one thread block (CudaExec::in_one_block):
@@ -129,10 +137,7 @@ struct BlockExec {
   }
   template <class F>
   __device__ void parallel_sweeps(std::size_t n, int sweeps, const F& f) const {
-    for (int s = 0; s < sweeps; ++s) {
-      for (std::size_t i = threadIdx.x; i < n; i += blockDim.x) f(s, i);
-      __syncthreads();
-    }
+    for (int s = 0; s < sweeps; ++s) parallel_for(n, cuda_detail::SweepOf<F>{f, s});
   }
 };
 
@@ -151,14 +156,6 @@ template <class F>
 __global__ void sweeps_in_one_block(std::size_t n, int sweeps, F f) {
   BlockExec{}.parallel_sweeps(n, sweeps, f);
 }
-
-// One pass of a parallel_sweeps call too large for one block.
-template <class F>
-struct SweepOf {
-  F f;
-  int sweep;
-  __device__ void operator()(std::size_t i) const { f(sweep, i); }
-};
 
 class Stream {
  public:
