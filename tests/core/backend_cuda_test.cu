@@ -78,6 +78,42 @@ TEST_F(CudaBackend, SumsAreBitwiseThoseOfTheCpu) {
   EXPECT_EQ(gpu.sum(0, ValueOf{nullptr}), 0.0);
 }
 
+// After a sum into s[0]: s[1] = s[0], and one more call counted in s[2].
+struct CopyAndCount {
+  double* s;
+  DP_HD void operator()(std::size_t) const {
+    s[1] = s[0];
+    s[2] += 1.0;
+  }
+};
+
+// sum_into's last warp adds the levels after the first and runs `then`;
+// the count of finished warps must be back to zero for the next sum, also
+// when the sums are replayed from a recorded graph.
+TEST_F(CudaBackend, SumIntoFinishesInItsLaunchAndCanBeReplayed) {
+  CudaExec gpu(0);
+  CpuExec cpu(2);
+  for (std::size_t n : {std::size_t{1000}, std::size_t{262144 + 77}, std::size_t{1024 * 1024 + 5000}}) {  // 1, 2, 3 levels
+    SCOPED_TRACE(n);
+    const std::vector<float> host = random_values(n, static_cast<unsigned>(n) + 1);
+    CudaExec::Buffer<float> device;
+    CudaExec::upload(device, host);
+    const double expected = cpu.sum(n, ValueOf{host.data()});
+    CudaExec::Buffer<double> scratch(sum_scratch_count(n)), result(3, 0.0);
+    const CopyAndCount then{CudaExec::ptr(result)};
+    CudaExec::Recording twice;
+    for (int replay = 0; replay < 3; ++replay)
+      gpu.replay(twice, [&] {
+        for (int k = 0; k < 2; ++k) gpu.sum_into(n, ValueOf{CudaExec::ptr(device)}, CudaExec::ptr(scratch), CudaExec::ptr(result), then);
+      });
+    gpu.synchronize();
+    const std::vector<double> r = CudaExec::download(result);
+    EXPECT_EQ(r[0], expected);
+    EXPECT_EQ(r[1], expected);
+    EXPECT_EQ(r[2], 6.0);
+  }
+}
+
 TEST_F(CudaBackend, MaxAndFirstMatchTheCpu) {
   CudaExec gpu(0);
   CpuExec cpu(2);

@@ -10,7 +10,8 @@
 // The iteration's scalars (ρ = r·z, d·q, r·r) stay where the vectors are
 // and the kernels read them there, so on the GPU an iteration needs no host
 // round trip: Exec::kIterationsPerCheck iterations run as one recorded
-// graph between convergence checks. An iteration that finds the solve
+// graph between convergence checks. What is done with a scalar alone (the
+// convergence test, β) runs after its sum, in the sum's launch. An iteration that finds the solve
 // converged (or at its cap) sets a flag that freezes x, r and d in the
 // iterations after it, so the result is that of checking after every
 // iteration, on both backends.
@@ -64,7 +65,21 @@ struct Xpay {
 
 // The iteration's scalars and state, in one small buffer of doubles.
 struct PcgScalars {
-  enum : int { kRho, kDq, kRr, kRhoNext, kBNorm, kTolerance, kMeanSum, kMeanCount, kStopped, kIterations, kMaxIterations, kCount };
+  enum : int {
+    kRho,
+    kDq,
+    kRr,
+    kRhoNext,
+    kBeta,
+    kBNorm,
+    kTolerance,
+    kMeanSum,
+    kMeanCount,
+    kStopped,
+    kIterations,
+    kMaxIterations,
+    kCount
+  };
   double* s;
   DP_HD bool stopped() const { return s[kStopped] != 0.0; }
 };
@@ -112,8 +127,8 @@ struct StepAndResidualNorm {
   }
 };
 
-// After the step: counts it, and stops on d.q <= 0, on |r| <= tol |b|, or at
-// the iteration cap (one thread).
+// After the step's r.r: counts it, and stops on d.q <= 0, on |r| <= tol |b|,
+// or at the iteration cap (one thread).
 struct CountIterationAndTest {
   PcgScalars p;
   DP_HD void operator()(std::size_t) const {
@@ -130,22 +145,25 @@ struct CountIterationAndTest {
   }
 };
 
-// d = z + beta d with beta = rho_next / rho; nothing once stopped.
+// After rho_next = r.z: beta = rho_next / rho, and rho_next becomes rho
+// (one thread); nothing once stopped.
+struct AdvanceRho {
+  PcgScalars p;
+  DP_HD void operator()(std::size_t) const {
+    if (p.stopped()) return;
+    p.s[PcgScalars::kBeta] = p.s[PcgScalars::kRhoNext] / p.s[PcgScalars::kRho];
+    p.s[PcgScalars::kRho] = p.s[PcgScalars::kRhoNext];
+  }
+};
+
+// d = z + beta d; nothing once stopped.
 struct UpdateDirection {
   PcgScalars p;
   const float* z;
   float* d;
   DP_HD void operator()(std::size_t i) const {
     if (p.stopped()) return;
-    d[i] = z[i] + static_cast<float>(p.s[PcgScalars::kRhoNext] / p.s[PcgScalars::kRho]) * d[i];
-  }
-};
-
-// rho = rho_next, after every element has used the old rho (one thread).
-struct AdvanceRho {
-  PcgScalars p;
-  DP_HD void operator()(std::size_t) const {
-    if (!p.stopped()) p.s[PcgScalars::kRho] = p.s[PcgScalars::kRhoNext];
+    d[i] = z[i] + static_cast<float>(p.s[PcgScalars::kBeta]) * d[i];
   }
 };
 
@@ -203,8 +221,8 @@ class PoissonPcg {
     precondition(exec);
     exec.parallel_for(n, Xpay{z_.ptr(), 0.0f, d_.ptr()});
     const PcgScalars p = scalars();
-    exec.sum_into(n, ProductOf{Exec::ptr(r_), z_.ptr()}, Exec::ptr(partial_), p.s + PcgScalars::kRho);
-    exec.parallel_for(1, StartIterations{p, b_norm, static_cast<double>(tolerance), max_iterations});
+    exec.sum_into(n, ProductOf{Exec::ptr(r_), z_.ptr()}, Exec::ptr(partial_), p.s + PcgScalars::kRho,
+                  StartIterations{p, b_norm, static_cast<double>(tolerance), max_iterations});
     if (Exec::ptr(x) != recorded_x_) {  // the recording bakes x in
       iterations_.reset();
       recorded_x_ = Exec::ptr(x);
@@ -231,20 +249,19 @@ class PoissonPcg {
     double* partial = Exec::ptr(partial_);
     const ApplyPoissonAndDot apply{multigrid_.view(0), d_.ptr(), Exec::ptr(q_)};
     const StepIterateAndResidual step{p, d_.ptr(), Exec::ptr(q_), x, Exec::ptr(r_)};
+    const CountIterationAndTest count_and_test{p};
     if constexpr (Exec::kFusesPassesIntoSums) {
       exec.sum_into(n, apply, partial, p.s + PcgScalars::kDq);
-      exec.sum_into(n, StepAndResidualNorm{step}, partial, p.s + PcgScalars::kRr);
+      exec.sum_into(n, StepAndResidualNorm{step}, partial, p.s + PcgScalars::kRr, count_and_test);
     } else {  // the same values, each pass with a thread per element
       exec.parallel_for(n, apply);
       exec.sum_into(n, ProductOf{d_.ptr(), Exec::ptr(q_)}, partial, p.s + PcgScalars::kDq);
       exec.parallel_for(n, step);
-      exec.sum_into(n, ProductOf{Exec::ptr(r_), Exec::ptr(r_)}, partial, p.s + PcgScalars::kRr);
+      exec.sum_into(n, ProductOf{Exec::ptr(r_), Exec::ptr(r_)}, partial, p.s + PcgScalars::kRr, count_and_test);
     }
-    exec.parallel_for(1, CountIterationAndTest{p});
     precondition(exec);
-    exec.sum_into(n, ProductOf{Exec::ptr(r_), z_.ptr()}, partial, p.s + PcgScalars::kRhoNext);
+    exec.sum_into(n, ProductOf{Exec::ptr(r_), z_.ptr()}, partial, p.s + PcgScalars::kRhoNext, AdvanceRho{p});
     exec.parallel_for(n, UpdateDirection{p, z_.ptr(), d_.ptr()});
-    exec.parallel_for(1, AdvanceRho{p});
   }
 
   void precondition(const Exec& exec) {

@@ -7,8 +7,10 @@
 // which is what one GPU warp does with shuffles, so the GPU reads memory
 // coalesced and still adds in exactly the CPU's order. The block sums are
 // then summed the same way, as values of their own (block sums of block
-// sums), until one value is left: every level is one parallel pass on the
-// GPU, none is a serial loop. Sums are carried in double.
+// sums), until one value is left. On the GPU the first level is one thread
+// block per block, and the thread block that finishes last adds the other
+// levels in the same order (cuda_exec.cuh: sum_in_one_launch). Sums are
+// carried in double.
 #include <cstddef>
 
 #include "backend/host_device.h"
@@ -20,20 +22,10 @@ inline constexpr unsigned kSumLanes = 32;
 
 inline DP_HD std::size_t sum_block_count(std::size_t n) { return (n + kSumBlock - 1) / kSumBlock; }
 
-// One lane's share of one block, in index order.
-template <class ValueAt>
-DP_HD double sum_lane(std::size_t block, unsigned lane, std::size_t n, const ValueAt& f) {
-  const std::size_t begin = block * kSumBlock;
-  const std::size_t end = begin + kSumBlock < n ? begin + kSumBlock : n;
-  double s = 0.0;
-  for (std::size_t i = begin + lane; i < end; i += kSumLanes) s += static_cast<double>(f(i));
-  return s;
-}
-
 // The sum of one block: its lanes folded as the warp folds them. The CPU's
 // form: the block is walked once in index order, element i adding to lane
-// i mod kSumLanes, which gives every lane sum_lane's terms in sum_lane's
-// order while f reads memory contiguously (and can be vectorised). Inlined
+// i mod kSumLanes, which gives every lane its terms in the GPU lane's order
+// while f reads memory contiguously (and can be vectorised). Inlined
 // into the CPU launcher's loop, so that it runs in the loop's instruction
 // set (cpu_isa.h).
 template <class ValueAt>
@@ -49,6 +41,11 @@ DP_HD_INLINE double sum_block(std::size_t block, std::size_t n, const ValueAt& f
     for (unsigned l = 0; l < offset; ++l) lane[l] += lane[l + offset];
   return lane[0];
 }
+
+// What runs after a sum_into by default: nothing.
+struct NothingAfterSum {
+  DP_HD void operator()(std::size_t) const {}
+};
 
 // The values of one level of block sums, as a ValueAt.
 struct BlockSums {

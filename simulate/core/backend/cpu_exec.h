@@ -317,11 +317,13 @@ class CpuExec {
     return level[0];
   }
 
-  // *result = sum(n, f): the CUDA backend's interface, where the result
-  // stays on the device; `scratch` (sum_scratch_count(n) values) is unused.
-  template <class ValueAt>
-  void sum_into(std::size_t n, const ValueAt& f, double* /*scratch*/, double* result) const {
+  // *result = sum(n, f), then then(0): the CUDA backend's interface, where
+  // the result stays on the device and `then` runs in the sum's launch;
+  // `scratch` (sum_scratch_count(n) values) is unused.
+  template <class ValueAt, class Then = NothingAfterSum>
+  void sum_into(std::size_t n, const ValueAt& f, double* /*scratch*/, double* result, const Then& then = {}) const {
     *result = sum(n, f);
+    then(0);
   }
 
   // A recorded sequence of launches (a CUDA graph there) simply runs here.

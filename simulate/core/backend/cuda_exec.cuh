@@ -38,28 +38,112 @@ __global__ void for_each_point(int nx, int ny, int nz, F f) {
   if (i < nx && j < ny && k < nz) f(i, j, k);
 }
 
+constexpr unsigned kWholeWarp = 0xffffffffu;
+
+// The lanes' values folded as a tree, lane l taking lane l + 16, then
+// l + 8, ... (blocked_sum.h); lane 0 holds the result.
+template <class T, class Combine>
+__device__ T fold_lanes(T v, const Combine& combine) {
+  for (unsigned offset = kSumLanes / 2; offset > 0; offset /= 2) v = combine(v, __shfl_down_sync(kWholeWarp, v, offset));
+  return v;
+}
+
 // One warp per block of kSumBlock values: each lane reduces its strided
-// share, then the warp folds its lanes as a tree (blocked_sum.h). out[b]
-// receives block b's value.
+// share, then the warp folds its lanes. out[b] receives block b's value.
 template <class T, class LaneValue, class Combine>
 __global__ void reduce_blocks_by_warps(std::size_t blocks, LaneValue lane_value, Combine combine, T* out) {
   const std::size_t block = (static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x) / kSumLanes;
   const unsigned lane = threadIdx.x % kSumLanes;
   if (block >= blocks) return;  // whole warps leave together
-  T v = lane_value(block, lane);
-  for (unsigned offset = kSumLanes / 2; offset > 0; offset /= 2) v = combine(v, __shfl_down_sync(0xffffffffu, v, offset));
+  const T v = fold_lanes(lane_value(block, lane), combine);
   if (lane == 0) out[block] = v;
 }
 
-template <class ValueAt>
-struct SumLane {
-  std::size_t n;
-  ValueAt f;
-  __device__ double operator()(std::size_t block, unsigned lane) const { return sum_lane(block, lane, n, f); }
-};
 struct Add {
   __device__ double operator()(double a, double b) const { return a + b; }
 };
+
+// Block sums written by other thread blocks of the same launch, read from
+// L2 (the point of coherence) rather than from a possibly stale L1 line.
+struct CoherentBlockSums {
+  const double* sums;
+  __device__ double operator()(std::size_t i) const { return __ldcg(sums + i); }
+};
+
+// Threads of a thread block of sum_in_one_launch, which sums one block of
+// kSumBlock elements: four terms per thread.
+constexpr unsigned kSumThreads = 256;
+
+// The sum of block `block` of [0, n) in blocked_sum.h's order, returned in
+// thread 0; every thread of the thread block calls it. Each thread takes
+// its terms, contiguous across the threads, so the block's loads are all in
+// flight at once; they meet in `term` (shared), and the first warp adds
+// them as blocked_sum.h's lanes do (lane l: terms l, l + 32, ... in order)
+// and folds the lanes.
+template <class ValueAt>
+__device__ double sum_block_by_threads(std::size_t block, std::size_t n, const ValueAt& f, double* term) {
+  const std::size_t begin = block * kSumBlock;
+  const unsigned count = static_cast<unsigned>(n - begin < kSumBlock ? n - begin : kSumBlock);
+  for (unsigned t = threadIdx.x; t < count; t += kSumThreads) term[t] = static_cast<double>(f(begin + t));
+  __syncthreads();
+  double s = 0.0;
+  if (threadIdx.x < kSumLanes) {
+    for (unsigned t = threadIdx.x; t < count; t += kSumLanes) s += term[t];
+    s = fold_lanes(s, Add{});
+  }
+  return s;
+}
+
+// A whole sum in one launch, one thread block per block of kSumBlock
+// elements. Each thread block writes its block's sum to level_sums; the one
+// that finishes last (counted in *blocks_done, which it sets back to 0 for
+// the next sum) then adds the levels of block sums by itself, block by
+// block in the order that a launch per level would, writes *result and
+// calls then(0). So the result has the same bits as CpuExec::sum, and the
+// levels after the first cost no launches.
+template <class ValueAt, class Then>
+__global__ void __launch_bounds__(kSumThreads)
+    sum_in_one_launch(std::size_t n, ValueAt f, double* level_sums, double* result, unsigned* blocks_done, Then then) {
+  __shared__ double term[kSumBlock];
+  __shared__ bool last;
+  const unsigned blocks = gridDim.x;
+  const double v = sum_block_by_threads(blockIdx.x, n, f, term);
+  if (blocks == 1) {
+    if (threadIdx.x == 0) {
+      *result = v;
+      then(0);
+    }
+    return;
+  }
+  if (threadIdx.x == 0) {
+    level_sums[blockIdx.x] = v;
+    __threadfence();  // the block's sum is visible before the count says so
+    last = atomicAdd(blocks_done, 1u) == blocks - 1;
+  }
+  __syncthreads();
+  if (!last) return;  // the same for every thread of the block
+  __threadfence();    // and this block sees every other block's sum
+  const double* level = level_sums;
+  double* out = level_sums + blocks;
+  for (std::size_t count = blocks;;) {
+    const std::size_t next = sum_block_count(count);
+    for (std::size_t b = 0; b < next; ++b) {
+      __syncthreads();  // the first warp is done with `term`
+      const double s = sum_block_by_threads(b, count, CoherentBlockSums{level}, term);
+      if (threadIdx.x == 0) (next == 1 ? *result : out[b]) = s;
+    }
+    if (next == 1) break;
+    __threadfence();
+    __syncthreads();  // thread 0's sums, before any thread reads them as the next level
+    level = out;
+    out += next;
+    count = next;
+  }
+  if (threadIdx.x == 0) {
+    then(0);
+    *blocks_done = 0;
+  }
+}
 
 template <class ValueAt>
 struct MaxLane {
@@ -169,6 +253,23 @@ class Stream {
   cudaStream_t stream_ = nullptr;
 };
 
+// The count of thread blocks that have finished a sum_in_one_launch, zero
+// between sums: one per stream, as the stream runs one sum at a time.
+class FinishedBlocks {
+ public:
+  FinishedBlocks() {
+    check(cudaMalloc(&count_, sizeof(unsigned)), "cudaMalloc (finished blocks)");
+    check(cudaMemset(count_, 0, sizeof(unsigned)), "cudaMemset (finished blocks)");
+  }
+  FinishedBlocks(const FinishedBlocks&) = delete;
+  FinishedBlocks& operator=(const FinishedBlocks&) = delete;
+  ~FinishedBlocks() { cudaFree(count_); }
+  unsigned* get() const { return count_; }
+
+ private:
+  unsigned* count_ = nullptr;
+};
+
 // Device and pinned host memory for the per-block results of reductions,
 // kept between calls: allocating per call cost more than the reduction.
 class ReductionScratch {
@@ -230,6 +331,7 @@ class CudaExec {
   explicit CudaExec(int device = 0) {
     cuda_detail::check(cudaSetDevice(device), "cudaSetDevice");
     stream_ = std::make_shared<cuda_detail::Stream>();
+    finished_blocks_ = std::make_shared<cuda_detail::FinishedBlocks>();
   }
 
   // Every kernel of this backend runs on this stream: a blocking stream, so
@@ -301,23 +403,15 @@ class CudaExec {
 
   // *result = sum(n, f), left on the device: no host round trip, so it can
   // be part of a recorded graph. `scratch` holds sum_scratch_count(n) values
-  // (the intermediate levels of block sums).
-  template <class ValueAt>
-  void sum_into(std::size_t n, const ValueAt& f, double* scratch, double* result) const {
-    std::size_t blocks = sum_block_count(n);
-    if (blocks <= 1) {
-      launch_block_sums(std::size_t{1}, cuda_detail::SumLane<ValueAt>{n, f}, result);  // n = 0 gives 0
-      return;
-    }
-    launch_block_sums(blocks, cuda_detail::SumLane<ValueAt>{n, f}, scratch);
-    for (const double* level = scratch;;) {
-      const std::size_t next = sum_block_count(blocks);
-      double* out = next == 1 ? result : scratch + (level - scratch) + blocks;
-      launch_block_sums(next, cuda_detail::SumLane<BlockSums>{blocks, BlockSums{level}}, out);
-      if (next == 1) return;
-      level = out;
-      blocks = next;
-    }
+  // (the levels of block sums). Then then(0) runs once, after *result is
+  // written, as a parallel_for(1, then) after the sum would, without a
+  // launch of its own. One launch in all.
+  template <class ValueAt, class Then = NothingAfterSum>
+  void sum_into(std::size_t n, const ValueAt& f, double* scratch, double* result, const Then& then = {}) const {
+    const unsigned blocks = n > 0 ? static_cast<unsigned>(sum_block_count(n)) : 1u;  // n = 0: one empty block gives 0
+    cuda_detail::sum_in_one_launch<<<blocks, cuda_detail::kSumThreads, 0, stream()>>>(n, f, scratch, result,
+                                                                                      finished_blocks_->get(), then);
+    cuda_detail::check(cudaGetLastError(), "kernel launch");
   }
 
   // A sequence of launches recorded once as a CUDA graph and replayed:
@@ -412,14 +506,6 @@ class CudaExec {
  private:
   static constexpr std::size_t kOneBlockSweeps = 1024;
 
-  template <class LaneValue>
-  void launch_block_sums(std::size_t blocks, const LaneValue& lane_value, double* out) const {
-    constexpr unsigned kThreads = 256;
-    const unsigned grid = static_cast<unsigned>((blocks * kSumLanes + kThreads - 1) / kThreads);
-    cuda_detail::reduce_blocks_by_warps<double><<<grid, kThreads, 0, stream()>>>(blocks, lane_value, cuda_detail::Add{}, out);
-    cuda_detail::check(cudaGetLastError(), "kernel launch");
-  }
-
   // Launches one warp per block, copies the per-block results to pinned
   // host memory and waits for them; returns the host copy (valid until the
   // next reduction).
@@ -441,6 +527,7 @@ class CudaExec {
 
   std::shared_ptr<cuda_detail::Stream> stream_;
   std::shared_ptr<cuda_detail::ReductionScratch> scratch_ = std::make_shared<cuda_detail::ReductionScratch>();
+  std::shared_ptr<cuda_detail::FinishedBlocks> finished_blocks_;
 };
 
 }  // namespace dp
