@@ -11,7 +11,13 @@
 // and the kernels read them there, so on the GPU an iteration needs no host
 // round trip: Exec::kIterationsPerCheck iterations run as one recorded
 // graph between convergence checks. What is done with a scalar alone (the
-// convergence test, β) runs after its sum, in the sum's launch. An iteration that finds the solve
+// convergence test, β) runs after its sum, in the sum's launch.
+//
+// Where a check is a round trip (Exec::kIterationsPerCheck > 1), the first
+// check comes after as many iterations as the last solve took: the solves
+// of consecutive steps start from the last pressure and take about as many
+// iterations, and every iteration run past convergence costs its launches
+// however little it does. After that first check, one iteration per check. An iteration that finds the solve
 // converged (or at its cap) sets a flag that freezes x, r and d in the
 // iterations after it, so the result is that of checking after every
 // iteration, on both backends.
@@ -196,7 +202,8 @@ class PoissonPcg {
     multigrid_.resize(nx, ny, nz, faces);
     for (auto* b : {&z_, &d_}) b->resize(n, multigrid_.padding());
     singular_ = !faces.any_open();
-    iterations_.reset();
+    for (auto& r : iterations_) r.reset();
+    last_iterations_ = 0;
   }
 
   void set_unknowns(const Exec& exec, const Buffer<std::uint8_t>& unknown) { multigrid_.set_unknowns(exec, unknown); }
@@ -223,24 +230,33 @@ class PoissonPcg {
     const PcgScalars p = scalars();
     exec.sum_into(n, ProductOf{Exec::ptr(r_), z_.ptr()}, Exec::ptr(partial_), p.s + PcgScalars::kRho,
                   StartIterations{p, b_norm, static_cast<double>(tolerance), max_iterations});
-    if (Exec::ptr(x) != recorded_x_) {  // the recording bakes x in
-      iterations_.reset();
+    if (Exec::ptr(x) != recorded_x_) {  // the recordings bake x in
+      for (auto& r : iterations_) r.reset();
       recorded_x_ = Exec::ptr(x);
     }
-    for (;;) {
-      exec.replay(iterations_, [&] {
-        for (int k = 0; k < Exec::kIterationsPerCheck; ++k) iterate(exec, Exec::ptr(x));
-      });
+    const bool predicts = Exec::kIterationsPerCheck > 1 && last_iterations_ > 0;
+    for (int run = predicts ? last_iterations_ : Exec::kIterationsPerCheck;; run = predicts ? 1 : Exec::kIterationsPerCheck) {
+      run_iterations(exec, Exec::ptr(x), run);
       if (Exec::download_one(scalars_, PcgScalars::kStopped) != 0.0) break;
     }
     const std::vector<double> s = Exec::download(scalars_);
     result.iterations = static_cast<int>(s[PcgScalars::kIterations]);
     if (result.iterations > 0) result.relative_residual = static_cast<float>(std::sqrt(s[PcgScalars::kRr]) / b_norm);
+    last_iterations_ = result.iterations;
     return result;
   }
 
  private:
   PcgScalars scalars() { return PcgScalars{Exec::ptr(scalars_)}; }
+
+  // `count` iterations as replays of the recordings of 4, 2 and 1 iterations.
+  void run_iterations(const Exec& exec, float* x, int count) {
+    for (int r = kRecordings - 1; r >= 0; --r)
+      for (const int length = 1 << r; count >= length; count -= length)
+        exec.replay(iterations_[r], [&] {
+          for (int k = 0; k < length; ++k) iterate(exec, x);
+        });
+  }
 
   // One CG iteration; launches only, nothing waits for the device.
   void iterate(const Exec& exec, float* x) {
@@ -283,8 +299,10 @@ class PoissonPcg {
   Buffer<float> r_, q_;
   PaddedField<Exec> z_, d_;  // read by the stencil
   Buffer<double> partial_, scalars_;
-  typename Exec::Recording iterations_;
+  static constexpr int kRecordings = 3;
+  typename Exec::Recording iterations_[kRecordings];  // 1, 2 and 4 iterations
   const float* recorded_x_ = nullptr;
+  int last_iterations_ = 0;
   bool singular_ = false;
 };
 

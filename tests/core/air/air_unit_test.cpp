@@ -790,6 +790,61 @@ TEST(air_Multigrid, NewUnknownsRebuildTheHierarchy) {
   EXPECT_EQ(solve(reused), expected);
 }
 
+// CpuExec as a backend whose convergence check is a round trip, like the
+// GPU's: it checks every four iterations, or, once a solve is done, after
+// as many iterations as that solve took.
+struct CpuExecCheckingRarely : CpuExec {
+  using CpuExec::CpuExec;
+  static constexpr int kIterationsPerCheck = 4;
+};
+
+// An iteration after convergence (or the cap) changes nothing, so when the
+// solver checks does not change what it returns: warm-started solves whose
+// iteration counts go up and down (so that the count taken from the last
+// solve is too many, then too few) give the same x, bit for bit, and the
+// same counts and residuals as checking after every iteration.
+TEST(air_Pcg, CheckingRarelyGivesWhatCheckingEveryIterationGives) {
+  const int n = 20;
+  const std::size_t cells = static_cast<std::size_t>(n) * n * n;
+  DomainFaces faces;
+  faces.open_mask = 1u << 3;  // y max
+  std::vector<std::uint8_t> unknown(cells, 1);
+  for (int k = 5; k < 11; ++k)
+    for (int j = 0; j < 8; ++j)
+      for (int i = 3; i < 13; ++i) unknown[(static_cast<std::size_t>(k) * n + j) * n + i] = 0;
+  CpuExec every_exec(1);
+  CpuExecCheckingRarely rarely_exec(1);
+  PoissonPcg<CpuExec> every;
+  PoissonPcg<CpuExecCheckingRarely> rarely;
+  every.resize(n, n, n, faces);
+  rarely.resize(n, n, n, faces);
+  every.set_unknowns(every_exec, unknown);
+  rarely.set_unknowns(rarely_exec, unknown);
+  std::vector<float> x_every(cells, 0.0f), x_rarely(cells, 0.0f);
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> u(-1, 1);
+  std::vector<int> counts;
+  for (float tolerance : {1e-2f, 1e-6f, 1e-3f, 1e-6f, 1e-4f, 1e-6f, 1e-6f}) {
+    SCOPED_TRACE(tolerance);
+    std::vector<float> b(cells);
+    for (std::size_t c = 0; c < cells; ++c) b[c] = unknown[c] ? u(rng) : 0.0f;
+    std::vector<float> b_rarely = b;
+    const PcgResult r_every = every.solve(every_exec, b, x_every, tolerance, 100);
+    const PcgResult r_rarely = rarely.solve(rarely_exec, b_rarely, x_rarely, tolerance, 100);
+    EXPECT_EQ(r_rarely.iterations, r_every.iterations);
+    EXPECT_EQ(r_rarely.relative_residual, r_every.relative_residual);
+    EXPECT_EQ(x_rarely, x_every);
+    EXPECT_LE(r_every.relative_residual, tolerance);
+    counts.push_back(r_every.iterations);
+  }
+  bool rises = false, falls = false;
+  for (std::size_t s = 1; s < counts.size(); ++s) {
+    rises |= counts[s] > counts[s - 1];
+    falls |= counts[s] < counts[s - 1];
+  }
+  EXPECT_TRUE(rises && falls) << "the counts never went both ways";
+}
+
 // Alg. 1 line 7: a cell holding a rigid particle is solid, one holding a
 // liquid particle liquid, an inflow's cells inflow, the rest air.
 TEST(air_Classification, CellsTakeTheKindOfWhatTheyHold) {
