@@ -197,7 +197,7 @@ class PoissonPcg {
   void resize(int nx, int ny, int nz, DomainFaces faces) {
     const std::size_t n = static_cast<std::size_t>(nx) * ny * nz;
     for (auto* b : {&r_, &q_}) b->resize(n);
-    partial_.resize(sum_scratch_count(n) + 1);
+    partial_.assign(sum_scratch_count(n), 0.0);  // zero-filled, as sum_into needs
     scalars_.resize(PcgScalars::kCount);
     multigrid_.resize(nx, ny, nz, faces);
     for (auto* b : {&z_, &d_}) b->resize(n, multigrid_.padding());

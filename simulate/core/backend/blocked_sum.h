@@ -53,11 +53,13 @@ struct BlockSums {
   DP_HD double operator()(std::size_t i) const { return sums[i]; }
 };
 
-// Room for every level of block sums below the first one's sum_block_count(n)
-// values, down to (excluding) the final one: what a reduction that keeps its
-// levels in one buffer needs.
+// The scratch of a sum that keeps its levels in one buffer (sum_into): one
+// value's room for the count of finished blocks (cuda_exec.cuh), which must
+// be zero before the buffer's first sum (a zero-filled buffer) and is zero
+// again after each, then every level of block sums from the first one's
+// sum_block_count(n) values down to (excluding) the final one.
 inline DP_HD std::size_t sum_scratch_count(std::size_t n) {
-  std::size_t total = 0;
+  std::size_t total = 1;
   for (std::size_t blocks = sum_block_count(n); blocks > 1; blocks = sum_block_count(blocks)) total += blocks;
   return total;
 }

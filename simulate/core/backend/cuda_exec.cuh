@@ -102,8 +102,8 @@ __device__ double sum_block_by_threads(std::size_t block, std::size_t n, const V
 // calls then(0). So the result has the same bits as CpuExec::sum, and the
 // levels after the first cost no launches.
 template <class ValueAt, class Then>
-__global__ void __launch_bounds__(kSumThreads)
-    sum_in_one_launch(std::size_t n, ValueAt f, double* level_sums, double* result, unsigned* blocks_done, Then then) {
+__global__ void __launch_bounds__(kSumThreads) sum_in_one_launch(std::size_t n, ValueAt f, unsigned long long* blocks_done,
+                                                                 double* level_sums, double* result, Then then) {
   __shared__ double term[kSumBlock];
   __shared__ bool last;
   const unsigned blocks = gridDim.x;
@@ -118,7 +118,7 @@ __global__ void __launch_bounds__(kSumThreads)
   if (threadIdx.x == 0) {
     level_sums[blockIdx.x] = v;
     __threadfence();  // the block's sum is visible before the count says so
-    last = atomicAdd(blocks_done, 1u) == blocks - 1;
+    last = atomicAdd(blocks_done, 1ull) == blocks - 1;
   }
   __syncthreads();
   if (!last) return;  // the same for every thread of the block
@@ -253,23 +253,6 @@ class Stream {
   cudaStream_t stream_ = nullptr;
 };
 
-// The count of thread blocks that have finished a sum_in_one_launch, zero
-// between sums: one per stream, as the stream runs one sum at a time.
-class FinishedBlocks {
- public:
-  FinishedBlocks() {
-    check(cudaMalloc(&count_, sizeof(unsigned)), "cudaMalloc (finished blocks)");
-    check(cudaMemset(count_, 0, sizeof(unsigned)), "cudaMemset (finished blocks)");
-  }
-  FinishedBlocks(const FinishedBlocks&) = delete;
-  FinishedBlocks& operator=(const FinishedBlocks&) = delete;
-  ~FinishedBlocks() { cudaFree(count_); }
-  unsigned* get() const { return count_; }
-
- private:
-  unsigned* count_ = nullptr;
-};
-
 // Device and pinned host memory for the per-block results of reductions,
 // kept between calls: allocating per call cost more than the reduction.
 class ReductionScratch {
@@ -331,7 +314,6 @@ class CudaExec {
   explicit CudaExec(int device = 0) {
     cuda_detail::check(cudaSetDevice(device), "cudaSetDevice");
     stream_ = std::make_shared<cuda_detail::Stream>();
-    finished_blocks_ = std::make_shared<cuda_detail::FinishedBlocks>();
   }
 
   // Every kernel of this backend runs on this stream: a blocking stream, so
@@ -394,6 +376,8 @@ class CudaExec {
   double sum(std::size_t n, const ValueAt& f) const {
     scratch_->reserve((sum_scratch_count(n) + 1) * sizeof(double));
     double* device = static_cast<double*>(scratch_->device());
+    // The count of finished blocks: zero, whatever max or find_first left there.
+    cuda_detail::check(cudaMemsetAsync(device + 1, 0, sizeof(double), stream()), "cudaMemsetAsync (sum)");
     sum_into(n, f, device + 1, device);
     cuda_detail::check(cudaMemcpyAsync(scratch_->host(), device, sizeof(double), cudaMemcpyDeviceToHost, stream()),
                        "cudaMemcpyAsync (sum)");
@@ -402,15 +386,17 @@ class CudaExec {
   }
 
   // *result = sum(n, f), left on the device: no host round trip, so it can
-  // be part of a recorded graph. `scratch` holds sum_scratch_count(n) values
-  // (the levels of block sums). Then then(0) runs once, after *result is
-  // written, as a parallel_for(1, then) after the sum would, without a
-  // launch of its own. One launch in all.
+  // be part of a recorded graph. `scratch` holds sum_scratch_count(n)
+  // values, zero-filled before its first sum: the count of finished blocks
+  // (as the bits of an integer), then the levels of block sums. Then
+  // then(0) runs once, after *result is written, as a parallel_for(1, then)
+  // after the sum would, without a launch of its own. One launch in all.
   template <class ValueAt, class Then = NothingAfterSum>
   void sum_into(std::size_t n, const ValueAt& f, double* scratch, double* result, const Then& then = {}) const {
+    static_assert(sizeof(unsigned long long) == sizeof(double), "the count takes one value's room");
     const unsigned blocks = n > 0 ? static_cast<unsigned>(sum_block_count(n)) : 1u;  // n = 0: one empty block gives 0
-    cuda_detail::sum_in_one_launch<<<blocks, cuda_detail::kSumThreads, 0, stream()>>>(n, f, scratch, result,
-                                                                                      finished_blocks_->get(), then);
+    cuda_detail::sum_in_one_launch<<<blocks, cuda_detail::kSumThreads, 0, stream()>>>(
+        n, f, reinterpret_cast<unsigned long long*>(scratch), scratch + 1, result, then);
     cuda_detail::check(cudaGetLastError(), "kernel launch");
   }
 
@@ -527,7 +513,6 @@ class CudaExec {
 
   std::shared_ptr<cuda_detail::Stream> stream_;
   std::shared_ptr<cuda_detail::ReductionScratch> scratch_ = std::make_shared<cuda_detail::ReductionScratch>();
-  std::shared_ptr<cuda_detail::FinishedBlocks> finished_blocks_;
 };
 
 }  // namespace dp
