@@ -48,20 +48,80 @@ __device__ T fold_lanes(T v, const Combine& combine) {
   return v;
 }
 
-// One warp per block of kSumBlock values: each lane reduces its strided
-// share, then the warp folds its lanes. out[b] receives block b's value.
-template <class T, class LaneValue, class Combine>
-__global__ void reduce_blocks_by_warps(std::size_t blocks, LaneValue lane_value, Combine combine, T* out) {
-  const std::size_t block = (static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x) / kSumLanes;
-  const unsigned lane = threadIdx.x % kSumLanes;
-  if (block >= blocks) return;  // whole warps leave together
-  const T v = fold_lanes(lane_value(block, lane), combine);
-  if (lane == 0) out[block] = v;
+// Threads of a thread block that reduces one block of kSumBlock elements:
+// four terms per thread.
+constexpr unsigned kSumThreads = 256;
+
+// Block `block` of [0, n) reduced by the thread block, in blocked_sum.h's
+// order; every thread of the block calls it, and thread 0 gets the result.
+// Each thread takes its terms, term_at(i), contiguous across the threads,
+// so the block's loads are all in flight at once (a warp walking 32 terms
+// per lane one after another was latency-bound); they meet in `term`
+// (shared), and the first warp combines them as blocked_sum.h's lanes do
+// (lane l: terms l, l + 32, ... in order, from `identity`), then folds the
+// lanes.
+template <class T, class TermAt, class Combine>
+__device__ T reduce_block_by_threads(std::size_t block, std::size_t n, const TermAt& term_at, T identity,
+                                     const Combine& combine, T* term) {
+  const std::size_t begin = block * kSumBlock;
+  const unsigned count = static_cast<unsigned>(n - begin < kSumBlock ? n - begin : kSumBlock);
+  for (unsigned t = threadIdx.x; t < count; t += kSumThreads) term[t] = term_at(begin + t);
+  __syncthreads();
+  T v = identity;
+  if (threadIdx.x < kSumLanes) {
+    for (unsigned t = threadIdx.x; t < count; t += kSumLanes) v = combine(v, term[t]);
+    v = fold_lanes(v, combine);
+  }
+  return v;
 }
 
+// Sums: f(i) as a double, added from 0.
+template <class ValueAt>
+struct AsDouble {
+  ValueAt f;
+  __device__ double operator()(std::size_t i) const { return static_cast<double>(f(i)); }
+};
 struct Add {
   __device__ double operator()(double a, double b) const { return a + b; }
 };
+// Maxima: f(i) as a float, taken from the lowest value.
+template <class ValueAt>
+struct AsFloat {
+  ValueAt f;
+  __device__ float operator()(std::size_t i) const { return static_cast<float>(f(i)); }
+};
+struct Max {
+  __device__ float operator()(float a, float b) const { return fmaxf(a, b); }
+};
+// First index: i where pred(i) holds, n elsewhere, the least taken from n.
+template <class Pred>
+struct IndexWhere {
+  Pred pred;
+  std::size_t n;
+  __device__ unsigned long long operator()(std::size_t i) const { return pred(i) ? i : n; }
+};
+struct Min {
+  __device__ unsigned long long operator()(unsigned long long a, unsigned long long b) const { return a < b ? a : b; }
+};
+// f(i, j, k) at cell index c = i + nx (j + ny k) of a box nx x ny.
+template <class F>
+struct AtCell {
+  F f;
+  int nx, ny;
+  __device__ float operator()(std::size_t c) const {
+    const std::size_t row = c / static_cast<std::size_t>(nx);
+    return f(static_cast<int>(c % static_cast<std::size_t>(nx)), static_cast<int>(row % static_cast<std::size_t>(ny)),
+             static_cast<int>(row / static_cast<std::size_t>(ny)));
+  }
+};
+
+// out[b] = block b's value, one thread block per block.
+template <class T, class TermAt, class Combine>
+__global__ void __launch_bounds__(kSumThreads) reduce_each_block(std::size_t n, TermAt term_at, T identity, Combine combine, T* out) {
+  __shared__ T term[kSumBlock];
+  const T v = reduce_block_by_threads(blockIdx.x, n, term_at, identity, combine, term);
+  if (threadIdx.x == 0) out[blockIdx.x] = v;
+}
 
 // Block sums written by other thread blocks of the same launch, read from
 // L2 (the point of coherence) rather than from a possibly stale L1 line.
@@ -69,30 +129,6 @@ struct CoherentBlockSums {
   const double* sums;
   __device__ double operator()(std::size_t i) const { return __ldcg(sums + i); }
 };
-
-// Threads of a thread block of sum_in_one_launch, which sums one block of
-// kSumBlock elements: four terms per thread.
-constexpr unsigned kSumThreads = 256;
-
-// The sum of block `block` of [0, n) in blocked_sum.h's order, returned in
-// thread 0; every thread of the thread block calls it. Each thread takes
-// its terms, contiguous across the threads, so the block's loads are all in
-// flight at once; they meet in `term` (shared), and the first warp adds
-// them as blocked_sum.h's lanes do (lane l: terms l, l + 32, ... in order)
-// and folds the lanes.
-template <class ValueAt>
-__device__ double sum_block_by_threads(std::size_t block, std::size_t n, const ValueAt& f, double* term) {
-  const std::size_t begin = block * kSumBlock;
-  const unsigned count = static_cast<unsigned>(n - begin < kSumBlock ? n - begin : kSumBlock);
-  for (unsigned t = threadIdx.x; t < count; t += kSumThreads) term[t] = static_cast<double>(f(begin + t));
-  __syncthreads();
-  double s = 0.0;
-  if (threadIdx.x < kSumLanes) {
-    for (unsigned t = threadIdx.x; t < count; t += kSumLanes) s += term[t];
-    s = fold_lanes(s, Add{});
-  }
-  return s;
-}
 
 // A whole sum in one launch, one thread block per block of kSumBlock
 // elements. Each thread block writes its block's sum to level_sums; the one
@@ -107,7 +143,7 @@ __global__ void __launch_bounds__(kSumThreads) sum_in_one_launch(std::size_t n, 
   __shared__ double term[kSumBlock];
   __shared__ bool last;
   const unsigned blocks = gridDim.x;
-  const double v = sum_block_by_threads(blockIdx.x, n, f, term);
+  const double v = reduce_block_by_threads(blockIdx.x, n, AsDouble<ValueAt>{f}, 0.0, Add{}, term);
   if (blocks == 1) {
     if (threadIdx.x == 0) {
       *result = v;
@@ -129,7 +165,7 @@ __global__ void __launch_bounds__(kSumThreads) sum_in_one_launch(std::size_t n, 
     const std::size_t next = sum_block_count(count);
     for (std::size_t b = 0; b < next; ++b) {
       __syncthreads();  // the first warp is done with `term`
-      const double s = sum_block_by_threads(b, count, CoherentBlockSums{level}, term);
+      const double s = reduce_block_by_threads(b, count, CoherentBlockSums{level}, 0.0, Add{}, term);
       if (threadIdx.x == 0) (next == 1 ? *result : out[b]) = s;
     }
     if (next == 1) break;
@@ -144,49 +180,6 @@ __global__ void __launch_bounds__(kSumThreads) sum_in_one_launch(std::size_t n, 
     *blocks_done = 0;
   }
 }
-
-template <class ValueAt>
-struct MaxLane {
-  std::size_t n;
-  ValueAt f;
-  float lowest;
-  __device__ float operator()(std::size_t block, unsigned lane) const {
-    float m = lowest;
-    const std::size_t end = (block + 1) * kSumBlock < n ? (block + 1) * kSumBlock : n;
-    for (std::size_t i = block * kSumBlock + lane; i < end; i += kSumLanes) m = fmaxf(m, static_cast<float>(f(i)));
-    return m;
-  }
-};
-// f(i, j, k) at cell index c = i + nx (j + ny k) of a box nx x ny.
-template <class F>
-struct AtCell {
-  F f;
-  int nx, ny;
-  __device__ float operator()(std::size_t c) const {
-    const std::size_t row = c / static_cast<std::size_t>(nx);
-    return f(static_cast<int>(c % static_cast<std::size_t>(nx)), static_cast<int>(row % static_cast<std::size_t>(ny)),
-             static_cast<int>(row / static_cast<std::size_t>(ny)));
-  }
-};
-struct Max {
-  __device__ float operator()(float a, float b) const { return fmaxf(a, b); }
-};
-
-// The first index of the lane's share where pred holds, or n.
-template <class Pred>
-struct FirstLane {
-  std::size_t n;
-  Pred pred;
-  __device__ unsigned long long operator()(std::size_t block, unsigned lane) const {
-    const std::size_t end = (block + 1) * kSumBlock < n ? (block + 1) * kSumBlock : n;
-    for (std::size_t i = block * kSumBlock + lane; i < end; i += kSumLanes)
-      if (pred(i)) return i;
-    return n;
-  }
-};
-struct Min {
-  __device__ unsigned long long operator()(unsigned long long a, unsigned long long b) const { return a < b ? a : b; }
-};
 
 // One pass of a parallel_sweeps call: f(sweep, i) as a per-element functor.
 template <class F>
@@ -438,8 +431,8 @@ class CudaExec {
   template <class Pred>
   std::size_t find_first(std::size_t n, const Pred& pred) const {
     const std::size_t blocks = sum_block_count(n);
-    const unsigned long long* first =
-        reduce_blocks<unsigned long long>(blocks, cuda_detail::FirstLane<Pred>{n, pred}, cuda_detail::Min{});
+    const unsigned long long* first = reduce_blocks(n, cuda_detail::IndexWhere<Pred>{pred, n}, static_cast<unsigned long long>(n),
+                                                    cuda_detail::Min{});
     std::size_t m = n;
     for (std::size_t b = 0; b < blocks; ++b) m = first[b] < m ? static_cast<std::size_t>(first[b]) : m;
     return m;
@@ -449,7 +442,7 @@ class CudaExec {
   template <class ValueAt>
   float max(std::size_t n, const ValueAt& f, float lowest) const {
     const std::size_t blocks = sum_block_count(n);
-    const float* block_max = reduce_blocks<float>(blocks, cuda_detail::MaxLane<ValueAt>{n, f, lowest}, cuda_detail::Max{});
+    const float* block_max = reduce_blocks(n, cuda_detail::AsFloat<ValueAt>{f}, lowest, cuda_detail::Max{});
     float m = lowest;
     for (std::size_t b = 0; b < blocks; ++b) m = block_max[b] > m ? block_max[b] : m;
     return m;
@@ -492,18 +485,17 @@ class CudaExec {
  private:
   static constexpr std::size_t kOneBlockSweeps = 1024;
 
-  // Launches one warp per block, copies the per-block results to pinned
-  // host memory and waits for them; returns the host copy (valid until the
-  // next reduction).
-  template <class T, class LaneValue, class Combine>
-  const T* reduce_blocks(std::size_t blocks, const LaneValue& lane_value, const Combine& combine) const {
+  // Reduces each block of [0, n) (one thread block per block), copies the
+  // per-block results to pinned host memory and waits for them; returns
+  // the host copy (valid until the next reduction).
+  template <class T, class TermAt, class Combine>
+  const T* reduce_blocks(std::size_t n, const TermAt& term_at, T identity, const Combine& combine) const {
+    const std::size_t blocks = sum_block_count(n);
     if (blocks == 0) return nullptr;
     scratch_->reserve(blocks * sizeof(T));
     T* device = static_cast<T*>(scratch_->device());
-    constexpr unsigned kThreads = 256;
-    const std::size_t threads = blocks * kSumLanes;
-    const unsigned grid = static_cast<unsigned>((threads + kThreads - 1) / kThreads);
-    cuda_detail::reduce_blocks_by_warps<T><<<grid, kThreads, 0, stream()>>>(blocks, lane_value, combine, device);
+    cuda_detail::reduce_each_block<<<static_cast<unsigned>(blocks), cuda_detail::kSumThreads, 0, stream()>>>(n, term_at, identity,
+                                                                                                         combine, device);
     cuda_detail::check(cudaGetLastError(), "kernel launch");
     cuda_detail::check(cudaMemcpyAsync(scratch_->host(), device, blocks * sizeof(T), cudaMemcpyDeviceToHost, stream()),
                        "cudaMemcpyAsync (reduction)");
