@@ -9,18 +9,18 @@
 //
 // The iteration's scalars (ρ = r·z, d·q, r·r) stay where the vectors are
 // and the kernels read them there, so on the GPU an iteration needs no host
-// round trip: Exec::kIterationsPerCheck iterations run as one recorded
-// graph between convergence checks. What is done with a scalar alone (the
-// convergence test, β) runs after its sum, in the sum's launch.
+// round trip: the iterations between two convergence checks run as
+// recorded graphs. What is done with a scalar alone (the convergence test,
+// β) runs after its sum, in the sum's launch. An iteration that finds the
+// solve converged (or at its cap) sets a flag that freezes x, r and d in
+// the iterations after it, so the result is that of checking after every
+// iteration, on both backends.
 //
 // Where a check is a round trip (Exec::kIterationsPerCheck > 1), the first
 // check comes after as many iterations as the last solve took: the solves
 // of consecutive steps start from the last pressure and take about as many
 // iterations, and every iteration run past convergence costs its launches
-// however little it does. After that first check, one iteration per check. An iteration that finds the solve
-// converged (or at its cap) sets a flag that freezes x, r and d in the
-// iterations after it, so the result is that of checking after every
-// iteration, on both backends.
+// however little it does. After that first check, one iteration per check.
 #include <cmath>
 #include <cstdint>
 
@@ -235,9 +235,11 @@ class PoissonPcg {
       recorded_x_ = Exec::ptr(x);
     }
     const bool predicts = Exec::kIterationsPerCheck > 1 && last_iterations_ > 0;
-    for (int run = predicts ? last_iterations_ : Exec::kIterationsPerCheck;; run = predicts ? 1 : Exec::kIterationsPerCheck) {
-      run_iterations(exec, Exec::ptr(x), run);
+    int before_check = predicts ? last_iterations_ : Exec::kIterationsPerCheck;
+    for (;;) {
+      run_iterations(exec, Exec::ptr(x), before_check);
       if (Exec::download_one(scalars_, PcgScalars::kStopped) != 0.0) break;
+      before_check = predicts ? 1 : Exec::kIterationsPerCheck;
     }
     const std::vector<double> s = Exec::download(scalars_);
     result.iterations = static_cast<int>(s[PcgScalars::kIterations]);

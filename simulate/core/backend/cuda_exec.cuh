@@ -283,8 +283,10 @@ class CudaExec {
   template <class T>
   using Buffer = thrust::device_vector<T>;
 
-  // Convergence checks of iterative solvers (host round trips) every this
-  // many iterations; the iterations between run as one recorded graph.
+  // Convergence checks of iterative solvers are host round trips: with
+  // nothing else to go by, one every this many iterations, which run
+  // between checks as recorded graphs (PoissonPcg checks first where its
+  // last solve ended).
   static constexpr int kIterationsPerCheck = 4;
 
   // No: a sum runs one warp per 1024 elements, so a fused stencil pass
