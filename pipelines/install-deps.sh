@@ -6,7 +6,8 @@
 # libopenvdb-tools (vdb_print), openimageio-tools and assimp-utils for the
 # readers test, tests/cli/readers_cli_test.cpp;
 # gnuplot, the DejaVu fonts and python3 for `make figures` and
-# pipelines/make-assets.py).
+# pipelines/make-assets.py; patchelf for the GPU bundle, pipelines/gpu-bundle.sh,
+# and debootstrap for its test in a minimal Debian, tests/bundle).
 # Idempotent: when everything is present it prints nothing and returns at once.
 set -euo pipefail
 
@@ -14,10 +15,11 @@ packages=(
   cmake ninja-build g++ make pkg-config
   libeigen3-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
   libtbb-dev libassimp-dev libembree-dev libopenimageio-dev openimageio-tools jq
-  libopenexr-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev libboost-dev zlib1g-dev
+  libopenexr-dev libstb-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev libboost-dev zlib1g-dev
   clang libclang-rt-14-dev libomp-dev
   slurm-wlm munge python3 assimp-utils libopenvdb-tools
   gnuplot-nox fonts-dejavu-core
+  patchelf debootstrap
 )
 
 # The CPU backend compiles CCCL's Thrust with g++. It comes with the CUDA

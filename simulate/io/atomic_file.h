@@ -13,7 +13,7 @@ namespace dp::io {
 // file at `path`, if any, is then untouched.
 void write_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
 
-// The temporary name used for `path`, for writers (such as OpenImageIO) that
+// The temporary name used for `path`, for writers (such as OpenEXR's) that
 // open files themselves; pair with commit_temporary.
 std::filesystem::path temporary_path_for(const std::filesystem::path& path);
 void commit_temporary(const std::filesystem::path& temporary, const std::filesystem::path& path);

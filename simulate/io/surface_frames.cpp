@@ -1,6 +1,9 @@
 #include "surface_frames.h"
 
-#include <OpenImageIO/imageio.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfOutputFile.h>
 
 #include <stdexcept>
 
@@ -40,26 +43,28 @@ void write_surface_frame(const std::filesystem::path& file, const SurfaceSnapsho
     p[2] = s.temperature[t];
     p[3] = s.wetting[t];
   }
-  OIIO::ImageSpec spec(s.width, s.height, channels, OIIO::TypeDesc::FLOAT);
-  spec.channelnames = surface_channel_names();
-  spec.attribute("compression", "zip");
-  // OpenImageIO stamps the time of writing unless told one; a frame's bytes
-  // must depend on the simulation alone (a resumed run and image diffs
-  // compare them), so the stamp is a fixed, documented value.
-  spec.attribute("DateTime", "1970:01:01 00:00:00");
-  // OpenImageIO picks the format from the name, and the temporary name's
-  // extension is not .exr: the format is named.
-  const std::filesystem::path temporary = temporary_path_for(file);
-  auto out = OIIO::ImageOutput::create("openexr");
-  if (!out) throw std::runtime_error(file.string() + ": OpenImageIO cannot write OpenEXR: " + OIIO::geterror());
-  const bool written = out->open(temporary.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && out->close();
-  if (!written) {
-    const std::string error = out->geterror();
-    out.reset();
-    std::filesystem::remove(temporary);
-    throw std::runtime_error(file.string() + ": cannot write surface textures: " + error);
+  // OpenEXR writes no time stamp or host name of its own, so a frame's bytes
+  // depend on the simulation alone (a resumed run and image diffs compare
+  // them). Channels are stored in name order, which is already theirs.
+  Imf::Header header(s.width, s.height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  Imf::FrameBuffer buffer;
+  const auto& names = surface_channel_names();
+  const std::size_t pixel_stride = sizeof(float) * channels;
+  for (int c = 0; c < channels; ++c) {
+    header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+    buffer.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(pixels.data() + c), pixel_stride,
+                                       pixel_stride * static_cast<std::size_t>(s.width)));
   }
-  out.reset();
+  const std::filesystem::path temporary = temporary_path_for(file);
+  try {
+    Imf::OutputFile out(temporary.c_str(), header);
+    out.setFrameBuffer(buffer);
+    out.writePixels(s.height);
+  } catch (const std::exception& e) {
+    std::filesystem::remove(temporary);
+    throw std::runtime_error(file.string() + ": cannot write surface textures: " + e.what());
+  }
   commit_temporary(temporary, file);
 }
 

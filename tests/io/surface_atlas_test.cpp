@@ -8,6 +8,9 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
 
 #include "atlas_rasterization.h"
 #include "max_mass_texture.h"
@@ -136,25 +139,34 @@ TEST(MaxMass, ConstantTimesArea) {
   EXPECT_NEAR(total, 0.05 * 0.06, 1e-6 * 0.003);
 }
 
-TEST(MaxMass, FromAnImageOverTheAtlas) {
-  // A 64 x 32 PNG, white on its left half: only there may water condense.
-  const auto png = test::test_dir("images") / "half.png";
-  {
-    std::vector<unsigned char> pixels(64 * 32 * 3, 0);
-    for (int y = 0; y < 32; ++y)
-      for (int x = 0; x < 32; ++x)
-        for (int c = 0; c < 3; ++c) pixels[(y * 64 + x) * 3 + c] = 255;
-    auto out = OIIO::ImageOutput::create(png.string());
-    ASSERT_TRUE(out && out->open(png.string(), OIIO::ImageSpec(64, 32, 3, OIIO::TypeDesc::UINT8)));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && out->close());
-  }
+// Writes a width x height image with OpenImageIO (a writer that is not the
+// simulator's reader), `channels` channels of `type`, each pixel's channels
+// set by value(x, y, c) in [0, 1].
+template <class Value>
+void write_test_image(const std::filesystem::path& file, int width, int height, int channels, OIIO::TypeDesc type,
+                      Value value) {
+  std::vector<float> pixels(static_cast<std::size_t>(width) * height * channels);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < channels; ++c) pixels[(static_cast<std::size_t>(y) * width + x) * channels + c] = value(x, y, c);
+  auto out = OIIO::ImageOutput::create(file.string());
+  ASSERT_TRUE(out) << OIIO::geterror();
+  OIIO::ImageSpec spec(width, height, channels, type);
+  if (channels == 1) spec.channelnames = {"Y"};
+  ASSERT_TRUE(out->open(file.string(), spec)) << out->geterror();
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && out->close()) << out->geterror();
+}
+
+// An image white on its left half, of any size, over a 100 x 100 atlas: water
+// may condense only on the left, away from the edge where the resampling
+// filter blends the halves.
+void expect_left_half(const std::filesystem::path& image) {
   Built b = build(test::plane_with_uvs("image", 0.3f, 0.2f, 2, 0.0f, 1.0f), 100);
-  set_max_mass_from_image(b.raster.texels, png, 0.2);
+  set_max_mass_from_image(b.raster.texels, image, 0.2);
   const TexelGeometry& g = b.raster.texels;
   int left = 0, right = 0;
   for (std::size_t t = 0; t < g.size(); ++t) {
     const double u = (g.pixel[t] % 100 + 0.5) / 100;
-    // Away from the edge, where the resampling filter blends the halves.
     if (u < 0.4) {
       EXPECT_NEAR(g.max_mass[t], 0.2 * g.area[t], 1e-2 * 0.2 * g.area[t]);
       ++left;
@@ -166,7 +178,53 @@ TEST(MaxMass, FromAnImageOverTheAtlas) {
   }
   EXPECT_GT(left, 3500);
   EXPECT_GT(right, 3500);
+}
+
+TEST(MaxMass, FromAnImageOverTheAtlasEnlarged) {
+  const auto png = test::test_dir("images") / "half.png";
+  write_test_image(png, 64, 32, 3, OIIO::TypeDesc::UINT8, [](int x, int, int) { return x < 32 ? 1.0f : 0.0f; });
+  expect_left_half(png);
+  Built b = build(test::plane_with_uvs("image", 0.3f, 0.2f, 2, 0.0f, 1.0f), 16);
   EXPECT_THROW(set_max_mass_from_image(b.raster.texels, test::test_dir("images") / "missing.png", 1.0), std::runtime_error);
+}
+
+TEST(MaxMass, FromAnImageOverTheAtlasReduced) {
+  // Shrinking filters (Mitchell-Netravali) rather than samples, so a thin
+  // line of the large image does not vanish or alias.
+  const auto png = test::test_dir("images") / "half_large.png";
+  write_test_image(png, 400, 300, 1, OIIO::TypeDesc::UINT16, [](int x, int, int) { return x < 200 ? 1.0f : 0.0f; });
+  expect_left_half(png);
+}
+
+TEST(MaxMass, AnImageAtTheTexturesSizeIsUsedAsItIs) {
+  // 16-bit grey PNG and single-channel float EXR: each texel takes its own
+  // pixel's value exactly (v / 65535 for the PNG), none of its neighbours'.
+  Built b = build(test::plane_with_uvs("image", 0.3f, 0.2f, 2, 0.0f, 1.0f), 100);
+  auto value = [](int x, int y, int) { return static_cast<float>(((x * 7 + y * 13) % 100) / 99.0); };
+  for (const char* name : {"ramp16.png", "ramp.exr"}) {
+    const auto file = test::test_dir("images") / name;
+    const bool exr = std::string(name).ends_with(".exr");
+    write_test_image(file, 100, 100, 1, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT16, value);
+    set_max_mass_from_image(b.raster.texels, file, 0.5);
+    const TexelGeometry& g = b.raster.texels;
+    for (std::size_t t = 0; t < g.size(); ++t) {
+      const int x = g.pixel[t] % 100, y = g.pixel[t] / 100;
+      const double expected = exr ? value(x, y, 0) : std::round(value(x, y, 0) * 65535.0) / 65535.0;
+      ASSERT_NEAR(g.max_mass[t], expected * 0.5 * g.area[t], 1e-6 * 0.5 * g.area[t]) << name << " texel " << t;
+    }
+  }
+}
+
+TEST(MaxMass, AnImageThatIsNotOneNamesItsFile) {
+  const auto file = test::test_dir("images") / "not_an_image.png";
+  std::ofstream(file) << "this is text";
+  Built b = build(test::plane_with_uvs("image", 0.3f, 0.2f, 2, 0.0f, 1.0f), 16);
+  try {
+    set_max_mass_from_image(b.raster.texels, file, 1.0);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
