@@ -31,6 +31,7 @@ struct Options {
   int threads = 0;
   std::string frames;
   std::string preset;
+  double duration_s = 0;  // > 0: replaces simulation.duration_s
   dp::io::LogOptions log;
   dp::io::LogLevel level = dp::io::LogLevel::Info;  // log.effective(), once parsed
   bool resume = false;
@@ -95,6 +96,9 @@ int run(const Options& opt) {
   dp::io::FrameRange range = opt.frames.empty() ? dp::io::FrameRange{} : dp::io::parse_frame_range(opt.frames);
   dp::ExecutionConfig exec{dp::parse_device(opt.device), dp::resolve_thread_count(opt.threads)};
 
+  // The duration decides only where the shot ends (the physics never reads
+  // it), so a run of another length resumes from the same checkpoints.
+  if (opt.duration_s > 0) scene.simulation.duration_s = opt.duration_s;
   const auto& sim = scene.simulation;
   const int last_frame_of_scene = static_cast<int>(std::floor(sim.duration_s * sim.frame_rate_hz + 1e-9));
   const int last_frame = range.last < 0 ? last_frame_of_scene : std::min(range.last, last_frame_of_scene);
@@ -126,6 +130,7 @@ int run(const Options& opt) {
   manifest.rigid_particles_file = "rigid_particles.ply";
   manifest.extra["generator"] = std::string("dewpoint-simulate ") + dp::kVersion;
   manifest.extra["settings"] = {{"device", opt.device}, {"threads", exec.threads}, {"frames", opt.frames}};
+  if (opt.duration_s > 0) manifest.extra["settings"]["duration_s"] = opt.duration_s;
   if (exec.device == dp::Device::Cpu) manifest.extra["settings"]["cpu_isa"] = dp::cpu_isa_name(exec.cpu_isa);
   if (resumed) {
     manifest.extra["settings"]["resumed_after_frame"] = resumed->frame;
@@ -254,6 +259,9 @@ int main(int argc, char** argv) {
   app.add_option("--threads", opt.threads, "CPU threads (0: all)")->check(CLI::NonNegativeNumber);
   app.add_option("--frames", opt.frames, "frames to write, A-B (inclusive)");
   app.add_option("--preset", opt.preset, "apply the scene's presets.NAME (a JSON merge patch, e.g. preview)");
+  app.add_option("--duration", opt.duration_s,
+                 "simulated seconds of the shot, replacing simulation.duration_s (e.g. a table1 preset run for a whole second)")
+      ->check(CLI::PositiveNumber);
   dp::io::add_log_options(app, opt.log);
   app.add_flag("--resume", opt.resume,
                "continue an interrupted run from the newest intact checkpoint in OUT/checkpoints (from the start when there is none)");

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -78,6 +79,33 @@ TEST_F(PresetCli, SimulateRecordsThePresetAndMeshAndRenderApplyIt) {
   const nlohmann::json sidecar = read_json(work_ / "shot/images/beauty.0001.json");
   EXPECT_EQ(sidecar["resolution"], nlohmann::json({32, 18}));
   EXPECT_EQ(sidecar["spp"], 1);
+}
+
+// --duration lengthens a preset's shot (pipelines/gpu-shot.sh runs table1
+// for a whole second) and changes nothing but where it ends.
+TEST_F(PresetCli, DurationExtendsTheShotAndLeavesItsFramesAsTheyWere) {
+  const nlohmann::json coarse = {{"simulation", {{"particle_spacing_m", 0.025}, {"duration_s", 0.05}, {"frame_rate_hz", 20}}}};
+  const fs::path scene = copy_scene("demo", {{"coarse", coarse}});
+  const std::string run = std::string(DEWPOINT_SIMULATE) + " " + scene.string() + " --preset coarse --quiet -o ";
+  const auto short_run = test::run_command(run + (work_ / "short").string());
+  ASSERT_EQ(short_run.exit_code, 0) << short_run.output;
+  const auto long_run = test::run_command(run + (work_ / "long").string() + " --duration 0.1");
+  ASSERT_EQ(long_run.exit_code, 0) << long_run.output;
+  const nlohmann::json manifest = read_json(work_ / "long/frames/manifest.json");
+  ASSERT_EQ(manifest["frames"].size(), 3u);  // 0.1 s at 20 Hz: frames 0, 1, 2
+  EXPECT_EQ(read_json(work_ / "short/frames/manifest.json")["frames"].size(), 2u);
+  EXPECT_EQ(manifest["settings"]["duration_s"], 0.1);
+  const auto bytes = [](const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  for (const char* frame : {"particles.0000.ply", "particles.0001.ply"})
+    EXPECT_EQ(bytes(work_ / "short/frames" / frame), bytes(work_ / "long/frames" / frame)) << frame;
+
+  const auto refused = test::run_command(run + (work_ / "none").string() + " --duration 0");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.output.find("--duration"), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(work_ / "none"));
 }
 
 TEST_F(PresetCli, UnknownPresetIsRefusedByEveryToolBeforeAnyOutput) {
