@@ -46,3 +46,9 @@ find_path(DEWPOINT_CCCL_INCLUDE_DIR thrust/sort.h
 if(NOT DEWPOINT_CCCL_INCLUDE_DIR)
   message(FATAL_ERROR "dewpoint: CCCL (Thrust/CUB) headers not found; install the CUDA toolkit (expected /usr/local/cuda/include/cccl)")
 endif()
+
+# For scripts that read the build folder (pipelines/gpu-bundle.sh): whether
+# this build has the CUDA backend, and with which compiler.
+set(DEWPOINT_BUILT_CUDA ${DEWPOINT_HAVE_CUDA} CACHE INTERNAL "whether this build has the CUDA backend")
+set(DEWPOINT_BUILT_NVCC "${CMAKE_CUDA_COMPILER}" CACHE INTERNAL "the nvcc this build used")
+set(DEWPOINT_BUILT_CUDA_ARCHITECTURES "${CMAKE_CUDA_ARCHITECTURES}" CACHE INTERNAL "the CUDA architectures this build compiled for")
