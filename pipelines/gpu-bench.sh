@@ -4,7 +4,7 @@
 # report; LOG (default: stdout) collects them.
 set -uo pipefail
 cd "$(dirname "$0")/.."
-B=build-gpu/simulate
+B=${DEWPOINT_BENCH_BIN:-build-gpu/simulate}
 run() { echo "### $*"; "$@" 2>&1; echo "### exit $?"; }
 nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv,noheader || true
 run $B/dewpoint-bench-dam-break --device cuda --particles 100000 --steps 20 --warmup 5
