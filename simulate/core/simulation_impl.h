@@ -21,6 +21,7 @@
 #include "sph/surface_area_orthmann2013.h"
 #include "sph/surface_tension_akinci2013.h"
 #include "sph/time_step.h"
+#include "sph/viscosity_morris1997.h"
 #include "sph/viscosity_xsph.h"
 #include "surface/surface_textures.h"
 
@@ -108,7 +109,7 @@ class SimulationImpl final : public Simulation {
     surfaces_.prepare(exec_, setup, rigid_grid_.view(rigid_position_), rigid_grid_.order, rigid_volume_, rigid_temperature_);
     path_force_.prepare(surfaces_, rigid_position_.size(), setup.coupling.path_force ? setup.coupling.path_adhesion : 0.0f);
     area_calibration_ = flat_face_area_calibration(kernel_, setup.particle_spacing);
-    heat_dt_limit_ = heat_time_step_limit_of(setup);
+    diffusion_dt_limit_ = std::fmin(heat_time_step_limit_of(setup), viscous_time_step_limit(kernel_, setup.liquid.kinematic_viscosity));
     if (setup.air) {
       air_.emplace(exec_, *setup.air, setup.gravity, rigid_grid_.view(rigid_position_));
       coupling_.prepare(exec_, setup.coupling, *air_, rigid_position_, surfaces_);
@@ -367,7 +368,7 @@ class SimulationImpl final : public Simulation {
     float amax = length(setup_.gravity);
     if (steps_ > 0 || settling_steps_ > 0) amax = std::fmax(amax, last_max_acceleration_);
     float dt = converged_limit_.bound(cfl_time_step(setup_.particle_spacing, vmax, amax, ts.cfl_number, ts.force_number,
-                                                    std::fmin(ts.max_step, heat_dt_limit_)));
+                                                    std::fmin(ts.max_step, diffusion_dt_limit_)));
     if (dt < ts.min_step) {
       std::ostringstream s;
       s << "CFL time step " << dt << " s below the minimum " << ts.min_step << " s (max speed " << vmax
@@ -435,6 +436,14 @@ class SimulationImpl final : public Simulation {
     }
     exec_.parallel_for(n, SetNonPressureAcceleration{setup_.gravity, tension ? Exec::ptr(tension_acc_) : nullptr,
                                                      Exec::ptr(nonpressure_acc_)});
+    if (setup_.liquid.kinematic_viscosity > 0) {
+      const bool walls = !rigid_position_.empty();
+      exec_.parallel_for(n, AddViscosityMorris1997{liquid, rigid, Exec::ptr(liquid_.units), Exec::ptr(density_),
+                                                   walls ? Exec::ptr(rigid_volume_) : nullptr, Exec::ptr(liquid_.velocity),
+                                                   kernel_, particle_mass_, setup_.liquid.kinematic_viscosity,
+                                                   wall_layer_volume_per_akinci_volume(kernel_, setup_.particle_spacing),
+                                                   Exec::ptr(nonpressure_acc_), liquid_pairs_, rigid_pairs_});
+    }
     exec_.synchronize();
     other += seconds_since(t1);
 
@@ -732,7 +741,7 @@ class SimulationImpl final : public Simulation {
   bool has_adhesion_ = false;
   Buffer<std::uint8_t> rigid_held_;
   float area_calibration_ = 1;
-  float heat_dt_limit_ = 1e30f;
+  float diffusion_dt_limit_ = 1e30f;  // explicit heat conduction and viscosity
   std::int64_t steps_ = 0;
   double time_ = 0;
   float last_max_acceleration_ = 0;

@@ -80,6 +80,8 @@ LiquidSettings read_liquid(JsonObject o) {
   if (l.conductivity_w_mk < 0) throw o.error("conductivity_w_mk", "expected a non-negative number");
   l.specific_heat_j_kgk = positive(o, "specific_heat_j_kgk", o.number("specific_heat_j_kgk", l.specific_heat_j_kgk));
   l.xsph_epsilon = o.number("xsph_epsilon", l.xsph_epsilon);
+  l.kinematic_viscosity_m2_s =
+      non_negative(o, "kinematic_viscosity_m2_s", o.number("kinematic_viscosity_m2_s", l.kinematic_viscosity_m2_s));
   l.surface_tension = o.number("surface_tension", l.surface_tension);
   if (l.surface_tension < 0) throw o.error("surface_tension", "expected a non-negative number");
   l.boundary_friction = o.number("boundary_friction", l.boundary_friction);

@@ -66,6 +66,7 @@ struct LiquidSettings {
   double conductivity_w_mk = 0.6;
   double specific_heat_j_kgk = 4186;
   double xsph_epsilon = 0.02;
+  double kinematic_viscosity_m2_s = 1.0e-6;  // water at 20 C (Morris et al. 1997)
   double surface_tension = 0;  // gamma of Akinci et al. 2013
   double boundary_friction = 0.02;
   double temperature_k = 293.15;

@@ -156,6 +156,7 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   setup.max_speed = static_cast<float>(s.max_speed_m_s);
   setup.liquid.rest_density = static_cast<float>(s.liquid.rest_density_kg_m3);
   setup.liquid.xsph_epsilon = static_cast<float>(s.liquid.xsph_epsilon);
+  setup.liquid.kinematic_viscosity = static_cast<float>(s.liquid.kinematic_viscosity_m2_s);
   setup.liquid.conductivity = static_cast<float>(s.liquid.conductivity_w_mk);
   setup.liquid.surface_tension = static_cast<float>(s.liquid.surface_tension);
   setup.liquid.specific_heat = static_cast<float>(s.liquid.specific_heat_j_kgk);
