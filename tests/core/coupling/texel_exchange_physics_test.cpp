@@ -3,6 +3,9 @@
 // m_t^max allows, and no water is made or lost on the way.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "texel_box.h"
 
 namespace dp {
@@ -72,18 +75,47 @@ TEST(coupling_Alg2Physics, ColdMirrorFogsOnlyWhereMaxMassAllows) {
   EXPECT_NEAR(vapor0 - b.air.vapor_mass(b.exec), gained, 1e-9 * vapor0);
 }
 
-TEST(coupling_Alg2Physics, DewPointDecidesWhetherAPlateCondenses) {
-  // Still air at 20 degC and 60 % RH: T_dew = 12.0 degC (Eq. 11 inverted).
-  const double g = std::log(0.6) + 17.62 * 20 / (243.12 + 20), dew = 243.12 * g / (17.62 - g) + kCelsiusZero;
-  for (double offset : {-0.3, 0.3}) {
-    AirSettings s = still_box();
-    s.ambient_vapor = vapor_density_at_humidity(0.6, 293.15);
-    test::TexelBox b(1, s);
-    b.add_lattice(4, 0.004f, 0.04f, 0.03f, 0.03f, static_cast<float>(dew + offset), 0, 1e-8);
-    b.prepare();
-    for (int step = 0; step < 20; ++step) b.step(0.01f);
-    if (offset < 0) EXPECT_GT(b.texel_kg(), 0) << "no condensation 0.3 K below the dew point";
-    else EXPECT_EQ(b.texel_kg(), 0) << "condensation 0.3 K above the dew point";
+struct AirState {
+  const char* name;
+  double celsius, humidity;
+  double table_dew_celsius;  // psychrometric tables (e.g. the CRC Handbook's), to 0.1 K
+};
+
+// Magnus (Eq. 11) inverted: the temperature at which air of this vapor
+// pressure saturates.
+double magnus_dew_point_kelvin(double celsius, double humidity) {
+  const double g = std::log(humidity) + 17.62 * celsius / (243.12 + celsius);
+  return 243.12 * g / (17.62 - g) + kCelsiusZero;
+}
+
+// A plate held 0.3 K below the dew point of still air gains water, dry or
+// wet; held 0.3 K above it, a dry plate stays dry and a wet one loses water:
+// Eq. 12 changes sign exactly at the dew point. Two air states: a room
+// (20 degC, 60 %: T_dew 12.0 degC) and saturated warm air (35 degC, 100 %:
+// T_dew is the air's own temperature).
+TEST(coupling_Alg2Physics, DewPointDecidesBetweenCondensingAndEvaporating) {
+  for (const AirState& air : {AirState{"room", 20, 0.6, 12.0}, AirState{"saturated", 35, 1.0, 35.0}}) {
+    const double dew = magnus_dew_point_kelvin(air.celsius, air.humidity);
+    EXPECT_NEAR(dew - kCelsiusZero, air.table_dew_celsius, 0.1) << air.name;
+    for (double held_kg : {0.0, 2e-9})
+      for (double offset : {-0.3, 0.3}) {
+        AirSettings s = still_box();
+        s.ambient_temperature = static_cast<float>(air.celsius + kCelsiusZero);
+        s.ambient_vapor = vapor_density_at_humidity(air.humidity, s.ambient_temperature);
+        test::TexelBox b(1, s);
+        b.add_lattice(4, 0.004f, 0.04f, 0.03f, 0.03f, static_cast<float>(dew + offset), held_kg, 1e-8);
+        b.prepare();
+        const double before = b.texel_kg();
+        for (int step = 0; step < 20; ++step) b.step(0.01f);
+        const std::string where = std::string(air.name) + (held_kg > 0 ? ", wet" : ", dry") + " plate " +
+                                  (offset < 0 ? "below" : "above") + " the dew point";
+        if (offset < 0)
+          EXPECT_GT(b.texel_kg(), before) << where;
+        else if (held_kg == 0)
+          EXPECT_EQ(b.texel_kg(), 0) << where;
+        else
+          EXPECT_LT(b.texel_kg(), before) << where;
+      }
   }
 }
 
