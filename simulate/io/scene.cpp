@@ -152,6 +152,7 @@ CouplingSectionSettings read_coupling(JsonObject o) {
   if (!(c.evaporation_a >= 0)) throw o.error("evaporation_a_kg_m2_s_pa", "expected a non-negative number");
   c.evaporation_b = o.number("evaporation_b_kg_m3_pa", c.evaporation_b);
   if (!(c.evaporation_b >= 0)) throw o.error("evaporation_b_kg_m3_pa", "expected a non-negative number");
+  c.phase_change_time_scale = positive(o, "phase_change_time_scale", o.number("phase_change_time_scale", c.phase_change_time_scale));
   c.heat_exchange = o.boolean("heat_exchange", c.heat_exchange);
   c.particle_evaporation = o.boolean("particle_evaporation", c.particle_evaporation);
   c.texel_exchange = o.boolean("texel_exchange", c.texel_exchange);

@@ -101,6 +101,7 @@ struct AirInflowSettings {
 struct CouplingSectionSettings {
   double evaporation_a = EvaporationCoefficients{}.a;  // kg/(m^2 s Pa), Eq. 12's a
   double evaporation_b = EvaporationCoefficients{}.b;  // kg/(m^3 Pa), Eq. 12's b
+  double phase_change_time_scale = 1.0;               // CouplingSettings::phase_change_time_scale
   bool heat_exchange = true, particle_evaporation = true, texel_exchange = true, particle_emission = true;
   bool latent_heat = false;
   double latent_heat_j_kg = 2.26e6;

@@ -165,6 +165,7 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   setup.rigid.specific_heat = static_cast<float>(s.rigid_material.specific_heat_j_kgk);
   setup.coupling.coefficients.a = s.coupling.evaporation_a;
   setup.coupling.coefficients.b = s.coupling.evaporation_b;
+  setup.coupling.phase_change_time_scale = s.coupling.phase_change_time_scale;
   setup.coupling.heat_exchange = s.coupling.heat_exchange;
   setup.coupling.particle_evaporation = s.coupling.particle_evaporation;
   setup.coupling.texel_exchange = s.coupling.texel_exchange;

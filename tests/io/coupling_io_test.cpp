@@ -25,12 +25,15 @@ fs::path scene_with_coupling(const nlohmann::json& coupling, const std::string& 
 }
 
 TEST(coupling_Scene, ReadsEveryKeyIntoTheSetup) {
-  const nlohmann::json c = {{"evaporation_a_kg_m2_s_pa", 2e-8}, {"evaporation_b_kg_m3_pa", 3e-8}, {"heat_exchange", false},
+  const nlohmann::json c = {{"evaporation_a_kg_m2_s_pa", 2e-8}, {"evaporation_b_kg_m3_pa", 3e-8}, {"phase_change_time_scale", 50}, {"heat_exchange", false},
                             {"particle_evaporation", false}, {"texel_exchange", false}, {"particle_emission", false}, {"latent_heat", true}, {"latent_heat_j_kg", 2.4e6},
                             {"path_force", true}, {"path_adhesion", 3.5}, {"air_density_kg_m3", 1.1}, {"air_specific_heat_j_kgk", 1000}, {"air_conductivity_w_mk", 0.03}};
   const SimulationSetup s = make_simulation_setup(load_scene(scene_with_coupling(c, "all.json")));
   EXPECT_DOUBLE_EQ(s.coupling.coefficients.a, 2e-8);
   EXPECT_DOUBLE_EQ(s.coupling.coefficients.b, 3e-8);
+  EXPECT_DOUBLE_EQ(s.coupling.phase_change_time_scale, 50);
+  EXPECT_DOUBLE_EQ(s.coupling.rate_coefficients().a, 50 * 2e-8);
+  EXPECT_DOUBLE_EQ(s.coupling.rate_coefficients().b, 50 * 3e-8);
   EXPECT_FALSE(s.coupling.heat_exchange);
   EXPECT_FALSE(s.coupling.particle_evaporation);
   EXPECT_FALSE(s.coupling.texel_exchange);
@@ -46,7 +49,7 @@ TEST(coupling_Scene, ReadsEveryKeyIntoTheSetup) {
 
 TEST(coupling_Scene, BadValuesNameTheirKeys) {
   for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{
-           {"evaporation_a_kg_m2_s_pa", -1}, {"air_density_kg_m3", 0}, {"heat_exchange", "yes"}, {"latent_heat_j_kg", 0}, {"path_adhesion", -1},
+           {"evaporation_a_kg_m2_s_pa", -1}, {"phase_change_time_scale", 0}, {"air_density_kg_m3", 0}, {"heat_exchange", "yes"}, {"latent_heat_j_kg", 0}, {"path_adhesion", -1},
            {"path_forces", true}}) {
     std::string what;
     try {

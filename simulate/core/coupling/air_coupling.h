@@ -90,7 +90,7 @@ class AirCoupling {
     find_cell_velocity(exec, air);
     exec.parallel_for(liquid_.size, EvaporateParticles{air.view(), Exec::ptr(cell_velocity_), Exec::ptr(liquid_.pair_cell),
                                                        Exec::ptr(liquid_.pair_alpha), Exec::ptr(area), Exec::ptr(temperature),
-                                                       Exec::ptr(id), settings_.coefficients, dt, kg_per_unit, step,
+                                                       Exec::ptr(id), settings_.rate_coefficients(), dt, kg_per_unit, step,
                                                        Exec::ptr(units), Exec::ptr(liquid_.pair_eva),
                                                        settings_.latent_heat ? settings_.latent_heat_j_kg / specific_heat : 0.0f});
     if (vapor_written_.size() > 0)
@@ -108,7 +108,7 @@ class AirCoupling {
   void exchange_texels(const Exec& exec, AirGrid<Exec>& air, SurfaceTextures<Exec>& surfaces, float dt) {
     if (!settings_.texel_exchange) return;
     ExchangeParameters p;
-    p.coefficients = settings_.coefficients;
+    p.coefficients = settings_.rate_coefficients();
     p.dt = dt;
     p.kg_per_unit = surfaces.kg_per_unit();
     p.wet_threshold = settings_.wet_threshold;

@@ -7,7 +7,15 @@
 namespace dp {
 
 struct CouplingSettings {
-  EvaporationCoefficients coefficients;  // a, b of Eq. 12
+  EvaporationCoefficients coefficients;  // a, b of Eq. 12, physical (Smith et al. 1994 by default)
+  // Runs evaporation and condensation this many times faster than Eq. 12
+  // with `coefficients` would, for shots whose phase change must show within
+  // seconds of simulated time (art direction, not physics: the scenes'
+  // reasons in docs/paper-map.md, departures). 1 is the physical rate.
+  double phase_change_time_scale = 1.0;
+  EvaporationCoefficients rate_coefficients() const {
+    return EvaporationCoefficients{coefficients.a * phase_change_time_scale, coefficients.b * phase_change_time_scale};
+  }
   AirHeatProperties air;                 // rho_c, C_c, kappa_c of Eq. 15
   bool heat_exchange = true;             // Alg. 1 line 13
   bool particle_evaporation = true;      // line 15
