@@ -1,0 +1,114 @@
+// Evaporation into still air against the analytic solution for sorption
+// into a plane sheet with a surface evaporation condition (Crank, The
+// Mathematics of Diffusion, 2nd ed. 1975, Sec. 4.3.2, Eq. 4.54; Carslaw &
+// Jaeger 1959, Sec. 3.11, for heat):
+//
+//   M(t) / M_inf = 1 - sum_n 2 B^2 exp(-beta_n^2 D t / l^2) / (beta_n^2 (beta_n^2 + B^2 + B)),
+//   beta_n tan beta_n = B = l k / D.
+//
+// A closed column of still air, l high, stands on a wet plate at its own
+// temperature. Smith's law (Eq. 12, b unused in still air) is the surface
+// condition: with Eq. 10, a (p_sat - rho_c R_w T) = k (rho_sat - rho_c) for
+// k = a R_w T, a mass-transfer speed of 3.5 mm/s at 20 degC. The air takes
+// the vapor away by diffusion alone (D = 2.5e-5 m^2/s) and saturates, so
+// M_inf = (rho_sat - rho_0) V. With l = 1 cm, B = 1.4: the surface law and
+// the air's diffusion both limit the rate, and neither is tuned here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "texel_box.h"
+
+namespace dp {
+namespace {
+
+constexpr double kHeight = 0.01;      // l, m
+constexpr double kDiffusivity = 2.5e-5;  // D, m^2/s (AirSettings' default)
+constexpr float kKelvin = 293.15f;
+constexpr double kInitialHumidity = 0.3;
+constexpr int kColumns = 4;  // cells across the column, along x and z
+
+// The n-th positive root of beta tan(beta) = b, in ((n-1) pi, (n-1) pi + pi/2).
+double crank_root(int n, double b) {
+  const double pi = 3.14159265358979323846;
+  double lo = (n - 1) * pi, hi = lo + 0.5 * pi - 1e-12;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (mid * std::tan(mid) < b ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+double crank_uptake_fraction(double t, double b) {
+  double sum = 0;
+  for (int n = 1; n <= 400; ++n) {
+    const double beta = crank_root(n, b);
+    sum += 2 * b * b * std::exp(-beta * beta * kDiffusivity * t / (kHeight * kHeight)) /
+           (beta * beta * (beta * beta + b * b + b));
+  }
+  return 1 - sum;
+}
+
+struct Evaporation {
+  double surface_speed;             // k, m/s
+  double saturated_mass;            // M_inf, kg
+  std::vector<double> time, mass;   // evaporated by each time
+};
+
+// The column with `cells` cells up its height, one texel per cell column at
+// the centres of the lowest cells, stepped at `dt`.
+Evaporation evaporate(int cells, float dt, const std::vector<double>& times) {
+  const float dx = static_cast<float>(kHeight / cells);
+  AirSettings s = test::quiet_air_box(cells, static_cast<float>(kHeight));
+  s.domain_max = Vec3{kColumns * dx, static_cast<float>(kHeight), kColumns * dx};
+  s.vapor_diffusivity = static_cast<float>(kDiffusivity);
+  s.ambient_temperature = kKelvin;
+  s.ambient_vapor = vapor_density_at_humidity(kInitialHumidity, kKelvin);
+  test::TexelBox b(2, s);
+  b.add_lattice(kColumns, dx, 0.5f * dx, 0.5f * dx, 0.5f * dx, kKelvin, 1e-8, 1e-7);
+  b.prepare();
+
+  Evaporation e;
+  e.surface_speed = b.params.coefficients.a * kWaterVaporGasConstant * kKelvin;
+  const double volume = double(kColumns * dx) * (kColumns * dx) * kHeight;
+  e.saturated_mass = (vapor_density_at_humidity(1.0, kKelvin) - s.ambient_vapor) * volume;
+  const double start = b.texel_kg();
+  double t = 0;
+  for (double target : times) {
+    const int steps = static_cast<int>(std::lround((target - t) / dt));
+    for (int i = 0; i < steps; ++i) b.step(dt);
+    t += steps * double(dt);
+    e.time.push_back(t);
+    e.mass.push_back(start - b.texel_kg());
+  }
+  return e;
+}
+
+// Largest |M - M_Crank| over the sampled times, relative to M_inf.
+double worst_error(const Evaporation& e) {
+  const double b = kHeight * e.surface_speed / kDiffusivity;
+  double worst = 0;
+  for (std::size_t i = 0; i < e.time.size(); ++i)
+    worst = std::max(worst, std::fabs(e.mass[i] / e.saturated_mass - crank_uptake_fraction(e.time[i], b)));
+  return worst;
+}
+
+// t = 0.25 .. 8 s: l^2 / D = 4 s, so from the first, surface-limited
+// moments to nearly saturated air.
+const std::vector<double> kTimes = {0.25, 0.5, 1, 2, 4, 8};
+
+TEST(coupling_StillAirEvaporation, FollowsCrankSurfaceEvaporationSolutionAndConverges) {
+  double coarser = 1;
+  for (int cells : {16, 32, 64}) {
+    const double error = worst_error(evaporate(cells, 1e-3f, kTimes));
+    RecordProperty("worst_error_" + std::to_string(cells) + "_cells", std::to_string(error));
+    EXPECT_LT(error, 0.02) << cells << " cells";
+    EXPECT_LT(error, coarser) << cells << " cells: not converging";
+    coarser = error;
+  }
+}
+
+}  // namespace
+}  // namespace dp
