@@ -11,6 +11,7 @@ import datetime
 import json
 import os
 import platform
+import subprocess
 import sys
 
 # Paper Table 1 (Hochstetter & Kolb 2017), ms per step; None where the paper has '-'.
@@ -22,6 +23,40 @@ PAPER = {
     "glass": ("Glass", "174 K", "89 K", "64^3", "1024^2", 210, 31, 32, 23, 40, 2),
 }
 COLUMNS = ["Ptcl", "Grid", "Neigh", "Heat", "Eva", "dtau"]
+
+
+def seconds_per_simulated_second(step_ms, dtau_ms):
+    """Wall seconds per simulated second: the step's parts over the time step
+    (for ours the means, so the ratio is total step time over simulated time;
+    the paper gives one figure per column)."""
+    if dtau_ms is None or dtau_ms <= 0 or any(v is None for v in step_ms):
+        return None
+    return sum(step_ms) / dtau_ms
+
+
+def shot_seconds(frames_dir):
+    """Simulated seconds of the scene's whole shot as its file gives it
+    (without a preset): the shot and, where it settles first, the settling."""
+    with open(os.path.join(frames_dir, "manifest.json")) as f:
+        scene_file = json.load(f).get("scene_file")
+    if not scene_file or not os.path.exists(scene_file):
+        return None
+    with open(scene_file) as f:
+        sim = json.load(f).get("simulation", {})
+    return sim.get("duration_s", 0) + sim.get("settle", {}).get("duration_s", 0)
+
+
+def minutes(rate, seconds):
+    return None if rate is None or seconds is None else rate * seconds / 60
+
+
+def commit():
+    try:
+        root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+        return subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], capture_output=True, text=True,
+                              check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown commit"
 
 
 def ledger(frames_dir):
@@ -89,26 +124,35 @@ def fmt(v):
 
 def table1(out, runs, note):
     lines = ["# Table 1: run time per step (ms)", "",
-             "Ours: `dewpoint-simulate --device cpu` at the paper's resolution, %d threads, %s, %s (%s). %s" % (
-                 os.cpu_count() or 0, cpu_model(), datetime.date.today().isoformat(), platform.system(), note),
+             "Ours: `dewpoint-simulate --device cpu` at the paper's resolution, %d threads, %s, %s (%s), commit %s. %s" % (
+                 os.cpu_count() or 0, cpu_model(), datetime.date.today().isoformat(), platform.system(), commit(), note),
              "Paper: NVIDIA GeForce GTX Titan, CUDA 8.0 (Hochstetter & Kolb 2017, Table 1).",
              "Ptcl = SPH, Grid = air, Neigh = neighbour searches, Heat = heat transfer, Eva = evaporation and "
-             "condensation; medians over the timed steps; dτ in ms (ours: the median CFL step, bounded by the paper's).", "",
-             "| Scene | | #Ptcl | #RigPtcl | #Cell | #Texel | steps | " + " | ".join(COLUMNS) + " |",
-             "|---|---|---|---|---|---|---|" + "---|" * len(COLUMNS)]
+             "condensation; medians over the timed steps; dτ in ms (ours: the median CFL step, bounded by the paper's); "
+             "s/s = wall seconds per simulated second (ours: the columns' means over the mean dτ; the paper's: its "
+             "columns over its dτ, a '-' column counted as 0); shot = s/s times the scene's whole shot (its "
+             "duration_s and settling, in simulated seconds), in minutes.", "",
+             "| Scene | | #Ptcl | #RigPtcl | #Cell | #Texel | steps | " + " | ".join(COLUMNS) + " | s/s | shot (min) |",
+             "|---|---|---|---|---|---|---|" + "---|" * (len(COLUMNS) + 2)]
     for name, stats_dir in runs:
         paper = PAPER.get(name)
         with open(os.path.join(stats_dir, "stats", "timings_summary.json")) as f:
             summary = json.load(f)
         columns = summary.get("columns", {})
         ours = [columns.get(c, {}).get("median") for c in COLUMNS]
+        means = [columns.get(c, {}).get("mean") for c in COLUMNS]
+        ours_rate = seconds_per_simulated_second(means[:-1], means[-1])
         liquid, rigid, cells, texels = counts(os.path.join(stats_dir, "frames"))
+        shot = shot_seconds(os.path.join(stats_dir, "frames"))
         label = paper[0] if paper else name
-        lines.append("| %s | ours | %s | %s | %s | %s | %d | %s |" % (
-            label, liquid, rigid, cells, texels, summary.get("steps", 0), " | ".join(fmt(v) for v in ours)))
+        lines.append("| %s | ours | %s | %s | %s | %s | %d | %s | %s | %s |" % (
+            label, liquid, rigid, cells, texels, summary.get("steps", 0), " | ".join(fmt(v) for v in ours),
+            fmt(ours_rate), fmt(minutes(ours_rate, shot))))
         if paper:
-            lines.append("| | paper | %s | %s | %s | %s | | %s |" % (
-                paper[1], paper[2], paper[3], paper[4], " | ".join(fmt(v) for v in paper[5:])))
+            paper_rate = seconds_per_simulated_second([v or 0 for v in paper[5:-1]], paper[-1])
+            lines.append("| | paper | %s | %s | %s | %s | | %s | %s | %s |" % (
+                paper[1], paper[2], paper[3], paper[4], " | ".join(fmt(v) for v in paper[5:]), fmt(paper_rate),
+                fmt(minutes(paper_rate, shot))))
     with open(out, "w") as f:
         f.write("\n".join(lines) + "\n")
 
