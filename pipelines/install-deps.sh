@@ -5,6 +5,8 @@
 # for its test, which checks the farm's files with tools that are not ours;
 # libopenvdb-tools (vdb_print), openimageio-tools and assimp-utils for the
 # readers test, tests/cli/readers_cli_test.cpp;
+# python3-vtk9 and python3-numpy to read dewpoint-simulate --paraview's
+# files back with VTK's own readers (tests/cli/paraview_series_test.py);
 # gnuplot, the DejaVu fonts and python3 for `make figures` and
 # pipelines/make-assets.py; patchelf for the GPU bundle, pipelines/gpu-bundle.sh,
 # and debootstrap for its test in a minimal Debian, tests/bundle).
@@ -17,7 +19,7 @@ packages=(
   libtbb-dev libassimp-dev libembree-dev libopenimageio-dev openimageio-tools jq
   libopenexr-dev libstb-dev libopenvdb-dev libboost-iostreams-dev libcgal-dev libboost-dev zlib1g-dev
   clang libclang-rt-14-dev libomp-dev
-  slurm-wlm munge python3 assimp-utils libopenvdb-tools
+  slurm-wlm munge python3 assimp-utils libopenvdb-tools python3-vtk9 python3-numpy
   gnuplot-nox fonts-dejavu-core
   patchelf debootstrap
 )

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "air_vdb.h"
+#include "paraview_series.h"
 #include "checkpoint_folder.h"
 #include "cli_common.h"
 #include "dewpoint/version.h"
@@ -36,7 +37,10 @@ struct Options {
   dp::io::LogLevel level = dp::io::LogLevel::Info;  // log.effective(), once parsed
   bool resume = false;
   int checkpoint_every = 10;  // frames; 0: none
+  bool paraview = false;      // also the frames as VTK files and their collection
 };
+
+const char* const kParaViewCollection = "shot.pvd";
 
 // simulation.settle, before frame 0: the frames and the clock start from the
 // settled liquid.
@@ -130,6 +134,7 @@ int run(const Options& opt) {
   manifest.rigid_particles_file = "rigid_particles.ply";
   manifest.extra["generator"] = std::string("dewpoint-simulate ") + dp::kVersion;
   manifest.extra["settings"] = {{"device", opt.device}, {"threads", exec.threads}, {"frames", opt.frames}};
+  if (opt.paraview) manifest.extra["settings"]["paraview"] = true;
   if (opt.duration_s > 0) manifest.extra["settings"]["duration_s"] = opt.duration_s;
   if (exec.device == dp::Device::Cpu) manifest.extra["settings"]["cpu_isa"] = dp::cpu_isa_name(exec.cpu_isa);
   if (resumed) {
@@ -165,6 +170,18 @@ int run(const Options& opt) {
   const auto run_start = std::chrono::steady_clock::now();
   const std::int64_t first_step = simulation->step_count();
   int frames_done = first_frame;  // frames whose time the simulation has reached
+  // The ParaView collection lists every frame with its files, those of a
+  // resumed run's earlier frames included.
+  std::vector<dp::io::SeriesFrame> series;
+  const auto series_files = [](int frame) {
+    return std::pair{dp::io::frame_file_name("particles", frame, "vtp"), dp::io::frame_file_name("air", frame, "vti")};
+  };
+  if (opt.paraview)
+    for (const dp::io::FrameEntry& e : manifest.frames) {
+      const auto [particles_file, air_file] = series_files(e.index);
+      if (fs::exists(frames_dir / particles_file))
+        series.push_back({e.time_s, particles_file, fs::exists(frames_dir / air_file) ? air_file : std::string()});
+    }
   // One frame's files and its manifest entry; the manifest is rewritten
   // last, so that it lists only complete frames.
   auto write_frame = [&](int frame) {
@@ -198,6 +215,14 @@ int run(const Options& opt) {
                    {"texels_to_air_kg", w.texels_to_air_kg}, {"texels_to_liquid_kg", w.texels_to_liquid_kg},
                    {"drift_kg", w.drift_kg()},
                    {"relative_drift", w.relative_drift()}};
+    if (opt.paraview) {
+      const auto [particles_file, air_file] = series_files(frame);
+      dp::io::write_particles_vtp(frames_dir / particles_file, particles, static_cast<float>(manifest.particle_radius_m));
+      std::optional<dp::AirSnapshot> air = simulation->air();
+      if (air) dp::io::write_air_vti(frames_dir / air_file, *air);
+      series.push_back({entry.time_s, particles_file, air ? air_file : std::string()});
+      dp::io::write_pvd(frames_dir / kParaViewCollection, series);
+    }
     manifest.frames.push_back(entry);
     dp::io::write_manifest(frames_dir, manifest);
     dp::io::write_ledger_csv(stats_dir / "ledger.csv", manifest.frames);
@@ -263,6 +288,8 @@ int main(int argc, char** argv) {
                  "simulated seconds of the shot, replacing simulation.duration_s (e.g. a table1 preset run for a whole second)")
       ->check(CLI::PositiveNumber);
   dp::io::add_log_options(app, opt.log);
+  app.add_flag("--paraview", opt.paraview,
+               "also write each frame as VTK files and OUT/frames/shot.pvd, a time series ParaView opens (docs/file-formats.md)");
   app.add_flag("--resume", opt.resume,
                "continue an interrupted run from the newest intact checkpoint in OUT/checkpoints (from the start when there is none)");
   app.add_option("--checkpoint-every", opt.checkpoint_every,

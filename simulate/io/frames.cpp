@@ -39,8 +39,7 @@ void write_particle_frame(const std::filesystem::path& file, const ParticleSnaps
   ply.add("vy", PlyType::Float32, column(n, [&](std::size_t i) { return p.velocity[i].y; }));
   ply.add("vz", PlyType::Float32, column(n, [&](std::size_t i) { return p.velocity[i].z; }));
   ply.add("weight", PlyType::Float32, column(n, [&](std::size_t i) { return p.weight[i]; }));
-  // Sizes follow mass weights (paper Sec. 4.1): the radius scales with w^(1/3).
-  ply.add("radius", PlyType::Float32, column(n, [&](std::size_t i) { return particle_radius * std::cbrt(p.weight[i]); }));
+  ply.add("radius", PlyType::Float32, column(n, [&](std::size_t i) { return particle_radius_of(particle_radius, p.weight[i]); }));
   ply.add("temperature", PlyType::Float32, column(n, [&](std::size_t i) { return p.temperature[i]; }));
   ply.add("density", PlyType::Float32, column(n, [&](std::size_t i) { return p.density[i]; }));
   ply.add("pressure", PlyType::Float32, column(n, [&](std::size_t i) { return p.pressure[i]; }));

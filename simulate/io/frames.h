@@ -2,6 +2,7 @@
 // The frames folder (docs/file-formats.md): particle PLYs per frame, rigid
 // particles once, and manifest.json describing them.
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -15,6 +16,10 @@ namespace dp::io {
 
 // "particles.0007.ply" for kind "particles" and frame 7.
 std::string frame_file_name(const std::string& kind, int frame, const std::string& extension);
+
+// Sizes follow mass weights (paper Sec. 4.1): the radius of a particle of
+// mass weight w scales with w^(1/3).
+inline float particle_radius_of(float full_particle_radius, float weight) { return full_particle_radius * std::cbrt(weight); }
 
 void write_particle_frame(const std::filesystem::path& file, const ParticleSnapshot& particles, float particle_radius,
                           const std::string& comment);
