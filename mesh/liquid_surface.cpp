@@ -41,17 +41,17 @@ SurfaceParameters surface_parameters(double particle_spacing, const io::MeshSett
 }
 
 LiquidSurface liquid_surface(const LiquidParticles& particles, const SurfaceParameters& parameters,
-                             const ContactAngleCorrection_HochstetterKolb2017* correction) {
+                             const ContactAngleCorrection_HochstetterKolb2017* correction, ScalarGrid* field_out) {
   LiquidSurface surface;
   if (particles.size() == 0) return surface;
   auto start = std::chrono::steady_clock::now();
   surface.grid = zhu_bridson_grid_box(particles, parameters.kernel_radius, parameters.voxel_size);
-  const ScalarGrid field =
-      sample_liquid_field(particles, parameters.kernel_radius, surface.grid, correction, &surface.counts);
+  ScalarGrid field = sample_liquid_field(particles, parameters.kernel_radius, surface.grid, correction, &surface.counts);
   surface.field_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
   surface.mesh = marching_cubes(field);
   surface.marching_cubes_seconds = seconds_since(start);
+  if (field_out) *field_out = std::move(field);
   return surface;
 }
 

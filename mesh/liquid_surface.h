@@ -29,8 +29,10 @@ struct LiquidSurface {
   double field_seconds = 0, marching_cubes_seconds = 0;
 };
 
-// `correction` may be null: the uncorrected surface.
+// `correction` may be null: the uncorrected surface. Where `field` is given,
+// it receives the sampled field the mesh contours (for a level set).
 LiquidSurface liquid_surface(const LiquidParticles& particles, const SurfaceParameters& parameters,
-                             const ContactAngleCorrection_HochstetterKolb2017* correction = nullptr);
+                             const ContactAngleCorrection_HochstetterKolb2017* correction = nullptr,
+                             ScalarGrid* field = nullptr);
 
 }  // namespace dp::mesh

@@ -19,7 +19,7 @@ struct Options {
   std::string frames_dir, out_dir, frames;
   double voxel_size = 0, voxels_per_radius = 0;
   int threads = 0;
-  bool quiet = false, no_correction = false, check = false;
+  bool quiet = false, no_correction = false, check = false, level_set = false;
   double contact_angle_deg = 0;
   std::optional<std::string> preset;
 };
@@ -35,6 +35,7 @@ int run(const Options& opt) {
   job.no_correction = opt.no_correction;
   job.contact_angle_deg = opt.contact_angle_deg;
   job.check = opt.check;
+  job.level_set = opt.level_set;
   job.preset = opt.preset;
   // The limit lives as long as this object: for the whole run.
   std::unique_ptr<tbb::global_control> limit;
@@ -73,6 +74,9 @@ int main(int argc, char** argv) {
   app.add_flag("--check", opt.check,
                "check every mesh with CGAL (closed, manifold, oriented, self-intersections, volume, area); exit code 1 "
                "if one fails");
+  app.add_flag("--level-set", opt.level_set,
+               "also write the field the mesh contours as an OpenVDB level set, liquid.NNNN.vdb (default: the scene's "
+               "mesh.level_set)");
   app.add_option("--threads", opt.threads, "CPU threads (0: all)")->check(CLI::Range(0, 4096));
   dp::io::LogOptions log;  // progress is info; these tools have no debug lines
   dp::io::add_log_options(app, log);

@@ -8,6 +8,7 @@
 
 #include "dewpoint/version.h"
 #include "frames.h"
+#include "liquid_level_set.h"
 #include "liquid_surface.h"
 #include "mesh_check.h"
 #include "mesh_ply.h"
@@ -100,6 +101,7 @@ MeshFramesResult mesh_frames(const MeshFramesOptions& options) {
   // The walls are built once for the run: rigids do not move.
   auto start = std::chrono::steady_clock::now();
   const bool correct = scene.mesh.correction && !options.no_correction;
+  const bool level_set = scene.mesh.level_set || options.level_set;
   RigidSurfaces rigids;
   if (correct) rigids = load_rigid_surfaces(scene, manifest, options.frames_dir);
   const RigidWalls walls(rigids.meshes);
@@ -115,6 +117,7 @@ MeshFramesResult mesh_frames(const MeshFramesOptions& options) {
   for (const io::FrameEntry& frame : frames) {
     const fs::path particles_file = options.frames_dir / frame.particles_file;
     const std::string mesh_name = io::frame_file_name("liquid", frame.index, "ply");
+    const std::string level_set_name = level_set ? io::frame_file_name("liquid", frame.index, "vdb") : std::string();
     const fs::path sidecar_file = options.out_dir / io::frame_file_name("liquid", frame.index, "json");
 
     MeshSidecar sidecar;
@@ -123,6 +126,7 @@ MeshFramesResult mesh_frames(const MeshFramesOptions& options) {
     sidecar.frames_dir = fs::absolute(options.frames_dir).lexically_normal();
     sidecar.particles_file = frame.particles_file;
     sidecar.mesh_file = mesh_name;
+    sidecar.level_set_file = level_set_name;
     sidecar.scene_file = scene_file;
     sidecar.parameters = parameters;
     sidecar.threads = options.threads;
@@ -137,7 +141,8 @@ MeshFramesResult mesh_frames(const MeshFramesOptions& options) {
     sidecar.liquid_particles = particles.size();
     sidecar.read_seconds = seconds_since(start);
 
-    const LiquidSurface surface = liquid_surface(particles, parameters, correct ? &correction : nullptr);
+    ScalarGrid field;
+    const LiquidSurface surface = liquid_surface(particles, parameters, correct ? &correction : nullptr, level_set ? &field : nullptr);
     if (options.check) {
       start = std::chrono::steady_clock::now();
       sidecar.check = check_mesh(surface.mesh);
@@ -149,8 +154,10 @@ MeshFramesResult mesh_frames(const MeshFramesOptions& options) {
     // it is being replaced.
     fs::remove(sidecar_file);
     start = std::chrono::steady_clock::now();
-    write_mesh_ply(options.out_dir / mesh_name, surface.mesh,
-                   generator + " frame " + std::to_string(frame.index) + " from " + particles_file.string());
+    const std::string comment = generator + " frame " + std::to_string(frame.index) + " from " + particles_file.string();
+    write_mesh_ply(options.out_dir / mesh_name, surface.mesh, comment);
+    // One field, two outputs: the mesh is this grid's zero contour.
+    if (level_set) write_liquid_level_set(options.out_dir / level_set_name, liquid_level_set(field), comment);
     sidecar.write_seconds = seconds_since(start);
     const nlohmann::json record = mesh_sidecar_json(sidecar, surface);
     write_mesh_sidecar(sidecar_file, record);

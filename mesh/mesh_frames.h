@@ -19,6 +19,7 @@ struct MeshFramesOptions {
   bool no_correction = false;         // the plain Eq. 19 surface, whatever the scene says
   double contact_angle_deg = 0;       // > 0: alpha_base of every rigid
   bool check = false;                 // CGAL checks of every mesh, recorded in the sidecar
+  bool level_set = false;             // also liquid.NNNN.vdb, whatever the scene says
   std::optional<std::string> preset;  // scene preset; unset: the one the manifest records
 };
 

@@ -48,6 +48,7 @@ nlohmann::json mesh_sidecar_json(const MeshSidecar& s, const LiquidSurface& surf
       {"source_particles_file", s.particles_file},
       {"scene_file", s.scene_file.string()},
       {"mesh_file", s.mesh_file},
+      {"level_set_file", s.level_set_file.empty() ? nlohmann::json() : nlohmann::json(s.level_set_file)},
       {"liquid_particles", s.liquid_particles},
       {"particle_radius_m", s.parameters.particle_radius},
       {"kernel_radius_m", s.parameters.kernel_radius},

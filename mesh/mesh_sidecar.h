@@ -20,6 +20,7 @@ struct MeshSidecar {
   double time_s = 0;
   std::filesystem::path frames_dir;
   std::string particles_file, mesh_file;
+  std::string level_set_file;  // empty: none written
   std::filesystem::path scene_file;
   std::size_t liquid_particles = 0;
   SurfaceParameters parameters;

@@ -381,6 +381,7 @@ MeshSettings read_mesh(std::optional<JsonObject> o, const SimulationSettings& si
   m.receding_deg = non_negative(*o, "receding_deg", o->number("receding_deg", m.receding_deg));
   m.correction_reach_factor =
       positive(*o, "correction_reach_factor", o->number("correction_reach_factor", m.correction_reach_factor));
+  m.level_set = o->boolean("level_set", m.level_set);
   if (o->has("rigids"))
     for (auto& [name, r] : o->entries("rigids")) {
       bool known = false;

@@ -158,6 +158,7 @@ struct MeshSettings {
   double advancing_deg = 20;  // A_adv of Eq. 22, degrees per (m/s)^(1/3)
   double receding_deg = 20;   // A_rec of Eq. 22, degrees per (m/s)^(1/3)
   double correction_reach_factor = 1;  // correct where |xbar - xbar_p| < factor * rbar (the paper: 1)
+  bool level_set = false;  // also write the meshed field as an OpenVDB level set (dewpoint-mesh --level-set)
 };
 
 struct Scene {

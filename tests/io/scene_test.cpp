@@ -59,6 +59,24 @@ TEST(Scene, UnknownKeyIsNamedWithItsPath) {
   EXPECT_NE(e.find("simulation.liquid.viscosity: unknown key"), std::string::npos) << e;
 }
 
+// The two keys that switch new outputs and physics on: read as given,
+// refused with their path when of the wrong kind.
+TEST(Scene, LevelSetAndViscosityKeys) {
+  auto doc = demo_document();
+  EXPECT_FALSE(load_scene(write_scene(doc, "defaults.json")).mesh.level_set);
+  EXPECT_DOUBLE_EQ(load_scene(write_scene(doc, "defaults.json")).simulation.liquid.kinematic_viscosity_m2_s, 1e-6);
+  doc["mesh"]["level_set"] = true;
+  doc["simulation"]["liquid"]["kinematic_viscosity_m2_s"] = 1e-3;
+  const Scene s = load_scene(write_scene(doc, "set.json"));
+  EXPECT_TRUE(s.mesh.level_set);
+  EXPECT_DOUBLE_EQ(s.simulation.liquid.kinematic_viscosity_m2_s, 1e-3);
+  doc["mesh"]["level_set"] = "yes";
+  EXPECT_NE(error_of(doc, "bad_level_set.json").find("mesh.level_set"), std::string::npos);
+  doc["mesh"]["level_set"] = false;
+  doc["simulation"]["liquid"]["kinematic_viscosity_m2_s"] = -1;
+  EXPECT_NE(error_of(doc, "bad_nu.json").find("simulation.liquid.kinematic_viscosity_m2_s"), std::string::npos);
+}
+
 TEST(Scene, WrongTypeNamesExpectedAndFound) {
   auto doc = demo_document();
   doc["simulation"]["time_step_s"] = "fast";

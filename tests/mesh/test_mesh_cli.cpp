@@ -15,6 +15,8 @@
 
 #include "../test_folder.h"
 #include "dewpoint/version.h"
+#include <openvdb/openvdb.h>
+
 #include "frames.h"
 #include "ply.h"
 
@@ -117,6 +119,35 @@ TEST_F(mesh_Cli, MeshesATinyFramesFolder) {
   EXPECT_DOUBLE_EQ(sidecar.at("voxel_size_m").get<double>(), 0.5 * kSpacing / 2);
   EXPECT_EQ(sidecar.at("generator").get<std::string>(), std::string("dewpoint-mesh ") + dp::kVersion);
   for (const char* key : {"seconds", "source_frames_dir", "enclosed_volume_m3"}) EXPECT_TRUE(sidecar.contains(key)) << key;
+}
+
+// --level-set: liquid.NNNN.vdb beside the mesh, a level set named "surface"
+// whose voxels are the mesh's, recorded in the sidecar; without the flag
+// (and the scene's mesh.level_set) no grid is written.
+TEST_F(mesh_Cli, LevelSetFlagWritesTheFieldAsAnOpenVdbLevelSet) {
+  write_tiny_frames();
+  ASSERT_EQ(mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()) + " --quiet").exit_code, 0);
+  EXPECT_FALSE(fs::exists(out_dir() / "liquid.0000.vdb"));
+  EXPECT_TRUE(nlohmann::json::parse(read_text(out_dir() / "liquid.0000.json")).at("level_set_file").is_null());
+
+  const MesherRun run = mesher(quoted(frames_dir()) + " -o " + quoted(out_dir()) + " --level-set --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto sidecar = nlohmann::json::parse(read_text(out_dir() / "liquid.0000.json"));
+  EXPECT_EQ(sidecar.at("level_set_file").get<std::string>(), "liquid.0000.vdb");
+  openvdb::initialize();
+  openvdb::io::File file((out_dir() / "liquid.0000.vdb").string());
+  file.open();
+  const openvdb::GridBase::Ptr base = file.readGrid("surface");
+  file.close();
+  const auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
+  ASSERT_TRUE(grid);
+  EXPECT_EQ(grid->getGridClass(), openvdb::GRID_LEVEL_SET);
+  EXPECT_DOUBLE_EQ(grid->voxelSize()[0], sidecar.at("voxel_size_m").get<double>());
+  EXPECT_GT(grid->activeVoxelCount(), 0u);
+  // Inside the liquid (below zero) somewhere, and zero crossings between.
+  float lowest = 0;
+  for (auto v = grid->cbeginValueOn(); v; ++v) lowest = std::min(lowest, *v);
+  EXPECT_LT(lowest, 0.0f);
 }
 
 TEST_F(mesh_Cli, VoxelSizeOptionOverridesTheScene) {

@@ -33,7 +33,8 @@ struct WallDrop {
 
   Vec3d centre() const { return {centre_xz.x, floor_height + height_over_floor * radius, centre_xz.z}; }
 
-  SurfaceMesh mesh(bool corrected = true) const {
+  // `field`, if given, receives the sampled field the mesh contours.
+  SurfaceMesh mesh(bool corrected = true, ScalarGrid* field = nullptr) const {
     LiquidParticles p;
     p.position.push_back(centre());
     p.radius.push_back(radius);
@@ -41,7 +42,7 @@ struct WallDrop {
     const RigidWalls walls({floor_mesh(floor_height, 1.0)});
     const ContactAngleCorrection_HochstetterKolb2017 correction(walls, {{angles}, 1.0});
     const SurfaceParameters parameters{radius, 4 * radius, radius / voxels_per_radius};
-    return liquid_surface(p, parameters, corrected ? &correction : nullptr).mesh;
+    return liquid_surface(p, parameters, corrected ? &correction : nullptr, field).mesh;
   }
 };
 
