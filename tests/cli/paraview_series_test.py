@@ -15,8 +15,8 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLPolyDataReader
 
 PLY_TYPES = {"float": "<f4", "uint": "<u4", "int": "<i4", "uchar": "u1"}
 
@@ -65,7 +65,7 @@ def check_series(frames_dir):
         check(datasets.get(("1", vti)) == frame["time_s"], "frame %d: air at the manifest's time" % n)
 
         ply = read_ply(os.path.join(frames_dir, frame["files"]["particles"]))
-        poly = read_xml(vtk.vtkXMLPolyDataReader, os.path.join(frames_dir, vtp))
+        poly = read_xml(vtkXMLPolyDataReader, os.path.join(frames_dir, vtp))
         check(poly.GetNumberOfPoints() == len(ply) and poly.GetNumberOfVerts() == len(ply),
               "frame %d: %d points and vertex cells for %d particles" % (n, poly.GetNumberOfPoints(), len(ply)))
         points = vtk_to_numpy(poly.GetPoints().GetData())
@@ -77,7 +77,7 @@ def check_series(frames_dir):
             check(data.GetArray(name) is not None, "frame %d: no point array %s" % (n, name))
             check(np.array_equal(vtk_to_numpy(data.GetArray(name)), ply[name]), "frame %d: %s differs from the PLY's" % (n, name))
 
-        air = read_xml(vtk.vtkXMLImageDataReader, os.path.join(frames_dir, vti))
+        air = read_xml(vtkXMLImageDataReader, os.path.join(frames_dir, vti))
         vapor = vtk_to_numpy(air.GetCellData().GetArray("vapor_density")).astype(np.float64)
         spacing = air.GetSpacing()
         mass = vapor.sum() * spacing[0] * spacing[1] * spacing[2]
