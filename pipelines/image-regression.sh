@@ -63,20 +63,27 @@ render_case() {
     [ -x "$BIN/$exe" ] || die "$BIN/$exe not built (make -C pipelines build, or set DEWPOINT_BIN)"
   done
   mkdir -p "$out"
-  # The simulation and its mesh depend only on the scene: reuse them when a
-  # previous call left them (the sensitivity tests render one frame several ways).
-  if [ ! -f "$out/frames/manifest.json" ] || [ "$out/frames/manifest.json" -ot "$scene" ]; then
-    "$BIN/simulate/dewpoint-simulate" "$scene" -o "$out" --frames "$frame-$frame" "${preset_args[@]}" --quiet
+  # The simulation and its mesh depend only on the scene and the simulator:
+  # reuse them when a previous call left them (the sensitivity tests render
+  # one frame several ways). Otherwise start from nothing, so that a run that
+  # fails cannot leave an earlier run's frames to be rendered. This runs in
+  # a command substitution, where set -e does not hold: each stage's failure
+  # ends the case here.
+  local manifest=$out/frames/manifest.json
+  if [ ! -f "$manifest" ] || [ "$manifest" -ot "$scene" ] || [ "$manifest" -ot "$BIN/simulate/dewpoint-simulate" ]; then
+    rm -rf "$out/frames" "$out/meshes"
+    "$BIN/simulate/dewpoint-simulate" "$scene" -o "$out" --frames "$frame-$frame" "${preset_args[@]}" --quiet ||
+      die "case $name: dewpoint-simulate failed"
   fi
   local mesh_file
   mesh_file=$(printf '%s/meshes/liquid.%04d.ply' "$out" "$frame")
-  if [ ! -f "$mesh_file" ] || [ "$mesh_file" -ot "$out/frames/manifest.json" ]; then
-    "$BIN/mesh/dewpoint-mesh" "$out/frames" -o "$out/meshes" --frames "$frame" --quiet
+  if [ ! -f "$mesh_file" ] || [ "$mesh_file" -ot "$manifest" ] || [ "$mesh_file" -ot "$BIN/mesh/dewpoint-mesh" ]; then
+    "$BIN/mesh/dewpoint-mesh" "$out/frames" -o "$out/meshes" --frames "$frame" --quiet || die "case $name: dewpoint-mesh failed"
   fi
   rm -rf "$out/images"
   "$BIN/render/dewpoint-render" "$render_scene" --frames-dir "$out/frames" --meshes-dir "$out/meshes" \
     -o "$out/images" --frames "$frame" --resolution "${width}x${height}" --spp "$spp" --seed "${REGRESSION_SEED:-1}" \
-    --aov none --quiet
+    --aov none --quiet || die "case $name: dewpoint-render failed"
   printf '%s/images/beauty.%04d.exr\n' "$out" "$frame"
 }
 
