@@ -1,19 +1,15 @@
 #include "liquid_level_set.h"
 
-#include <algorithm>
 #include <cmath>
-#include <mutex>
-#include <stdexcept>
 
 #include <openvdb/tools/SignedFloodFill.h>
 
-#include "atomic_file.h"
+#include "vdb_file.h"
 
 namespace dp::mesh {
 
 openvdb::FloatGrid::Ptr liquid_level_set(const ScalarGrid& field, float half_width) {
-  static std::once_flag initialised;
-  std::call_once(initialised, [] { openvdb::initialize(); });
+  io::initialize_openvdb();
   const GridBox& box = field.box;
   const float band = half_width * static_cast<float>(box.voxel_size);
   auto grid = openvdb::FloatGrid::create(band);
@@ -32,22 +28,6 @@ openvdb::FloatGrid::Ptr liquid_level_set(const ScalarGrid& field, float half_wid
   // The inactive voxels and tiles enclosed by the band take -band: inside.
   openvdb::tools::signedFloodFill(grid->tree());
   return grid;
-}
-
-void write_liquid_level_set(const std::filesystem::path& file, const openvdb::FloatGrid::Ptr& grid, const std::string& comment) {
-  const std::filesystem::path tmp = io::temporary_path_for(file);
-  try {
-    openvdb::io::File out(tmp.string());
-    openvdb::MetaMap meta;
-    meta.insertMeta("comment", openvdb::StringMetadata(comment));
-    out.write(openvdb::GridCPtrVec{grid}, meta);
-    out.close();
-  } catch (const openvdb::Exception& e) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw std::runtime_error(file.string() + ": cannot write OpenVDB file: " + e.what());
-  }
-  io::commit_temporary(tmp, file);
 }
 
 }  // namespace dp::mesh

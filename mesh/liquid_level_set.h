@@ -8,9 +8,6 @@
 // hold -/+ half_width voxel sizes inside/outside, as OpenVDB level sets do.
 // The field is Zhu-Bridson's approximate distance, not a redistanced one:
 // |grad phi| is near 1 at the surface only.
-#include <filesystem>
-#include <string>
-
 #include <openvdb/openvdb.h>
 
 #include "scalar_grid.h"
@@ -20,8 +17,5 @@ namespace dp::mesh {
 inline constexpr float kLevelSetHalfWidth = 3.0f;  // voxels, OpenVDB's LEVEL_SET_HALF_WIDTH
 
 openvdb::FloatGrid::Ptr liquid_level_set(const ScalarGrid& field, float half_width = kLevelSetHalfWidth);
-
-// Written through a temporary name; file metadata "comment".
-void write_liquid_level_set(const std::filesystem::path& file, const openvdb::FloatGrid::Ptr& grid, const std::string& comment);
 
 }  // namespace dp::mesh

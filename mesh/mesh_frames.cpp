@@ -16,6 +16,7 @@
 #include "ply.h"
 #include "rigid_surfaces.h"
 #include "scene.h"
+#include "vdb_file.h"
 
 namespace dp::mesh {
 
@@ -157,7 +158,7 @@ MeshFramesResult mesh_frames(const MeshFramesOptions& options) {
     const std::string comment = generator + " frame " + std::to_string(frame.index) + " from " + particles_file.string();
     write_mesh_ply(options.out_dir / mesh_name, surface.mesh, comment);
     // One field, two outputs: the mesh is this grid's zero contour.
-    if (level_set) write_liquid_level_set(options.out_dir / level_set_name, liquid_level_set(field), comment);
+    if (level_set) io::write_vdb_file(options.out_dir / level_set_name, openvdb::GridCPtrVec{liquid_level_set(field)}, comment);
     sidecar.write_seconds = seconds_since(start);
     const nlohmann::json record = mesh_sidecar_json(sidecar, surface);
     write_mesh_sidecar(sidecar_file, record);

@@ -8,10 +8,10 @@
 #include <iostream>
 
 #include "air_vdb.h"
-#include "paraview_series.h"
 #include "checkpoint_folder.h"
 #include "cli_common.h"
 #include "dewpoint/version.h"
+#include "paraview_series.h"
 #include "frames.h"
 #include "ledger_csv.h"
 #include "log_options.h"
@@ -200,7 +200,9 @@ int run(const Options& opt) {
       dp::io::write_surface_frame(frames_dir / file, surfaces[r]);
       entry.surface_files[atlases[r].rigid_name] = file;
     }
-    if (std::optional<dp::AirSnapshot> air = simulation->air()) {
+    // One download of the air for every file that shows it.
+    const std::optional<dp::AirSnapshot> air = simulation->air();
+    if (air) {
       entry.air_file = dp::io::frame_file_name("air", frame, "vdb");
       dp::io::write_air_frame(frames_dir / entry.air_file, *air, comment);
       const dp::AirLedger& l = air->ledger;
@@ -218,7 +220,6 @@ int run(const Options& opt) {
     if (opt.paraview) {
       const auto [particles_file, air_file] = series_files(frame);
       dp::io::write_particles_vtp(frames_dir / particles_file, particles, static_cast<float>(manifest.particle_radius_m));
-      std::optional<dp::AirSnapshot> air = simulation->air();
       if (air) dp::io::write_air_vti(frames_dir / air_file, *air);
       series.push_back({entry.time_s, particles_file, air ? air_file : std::string()});
       dp::io::write_pvd(frames_dir / kParaViewCollection, series);

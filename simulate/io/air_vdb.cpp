@@ -2,10 +2,7 @@
 
 #include <openvdb/openvdb.h>
 
-#include <mutex>
-#include <stdexcept>
-
-#include "atomic_file.h"
+#include "vdb_file.h"
 
 namespace dp::io {
 
@@ -36,8 +33,7 @@ typename GridT::Ptr dense_grid(const MacGrid& g, const char* name, const ValueAt
 }  // namespace
 
 void write_air_frame(const std::filesystem::path& file, const AirSnapshot& air, const std::string& comment) {
-  static std::once_flag initialised;
-  std::call_once(initialised, [] { openvdb::initialize(); });
+  initialize_openvdb();
   const MacGrid& g = air.grid;
   auto vapor = dense_grid<openvdb::FloatGrid>(g, "vapor_density", [&](int i, int j, int k) {
     return static_cast<float>(air.vapor[g.cell(i, j, k)]);
@@ -51,21 +47,7 @@ void write_air_frame(const std::filesystem::path& file, const AirSnapshot& air, 
     return openvdb::Vec3s(v.x, v.y, v.z);
   });
   velocity->setVectorType(openvdb::VEC_INVARIANT);
-  openvdb::GridPtrVec grids{vapor, temperature, velocity};
-
-  const std::filesystem::path tmp = temporary_path_for(file);
-  try {
-    openvdb::io::File out(tmp.string());
-    openvdb::MetaMap meta;
-    meta.insertMeta("comment", openvdb::StringMetadata(comment));
-    out.write(grids, meta);
-    out.close();
-  } catch (const openvdb::Exception& e) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw std::runtime_error(file.string() + ": cannot write OpenVDB file: " + e.what());
-  }
-  commit_temporary(tmp, file);
+  write_vdb_file(file, openvdb::GridCPtrVec{vapor, temperature, velocity}, comment);
 }
 
 }  // namespace dp::io

@@ -19,19 +19,18 @@ namespace {
 // files say; every target we build for is.
 class AppendedArrays {
  public:
+  // Appends the values and returns the array's XML tag, a line of its own.
   template <class T>
-  void add(const std::string& name, const char* vtk_type, int components, const std::vector<T>& values) {
+  std::string add(const std::string& name, const char* vtk_type, int components, const std::vector<T>& values) {
     std::ostringstream xml;
-    xml << "<DataArray type=\"" << vtk_type << "\"";
+    xml << "    <DataArray type=\"" << vtk_type << "\"";
     if (!name.empty()) xml << " Name=\"" << name << "\"";
-    xml << " NumberOfComponents=\"" << components << "\" format=\"appended\" offset=\"" << data_.size() << "\"/>";
-    tags_.push_back(xml.str());
+    xml << " NumberOfComponents=\"" << components << "\" format=\"appended\" offset=\"" << data_.size() << "\"/>\n";
     const std::uint64_t bytes = values.size() * sizeof(T);
     append(&bytes, sizeof bytes);
     append(values.data(), bytes);
+    return xml.str();
   }
-  // The tag of the n-th array added.
-  const std::string& tag(std::size_t n) const { return tags_[n]; }
   void write_data(std::ostream& out) const {
     out << "  <AppendedData encoding=\"raw\">\n_";
     out.write(data_.data(), static_cast<std::streamsize>(data_.size()));
@@ -44,7 +43,6 @@ class AppendedArrays {
     data_.resize(at + n);
     if (n > 0) std::memcpy(data_.data() + at, p, n);
   }
-  std::vector<std::string> tags_;
   std::vector<char> data_;
 };
 
@@ -73,28 +71,27 @@ void write_particles_vtp(const std::filesystem::path& file, const ParticleSnapsh
   const std::size_t n = p.size();
   AppendedArrays a;
   // Point data, in the order of the PLY's vertex properties (file-formats.md).
-  a.add("velocity", "Float32", 3, flatten(p.velocity));
-  a.add("weight", "Float32", 1, p.weight);
-  a.add("radius", "Float32", 1, column<float>(n, [&](std::size_t i) { return particle_radius_of(radius, p.weight[i]); }));
-  a.add("temperature", "Float32", 1, p.temperature);
-  a.add("density", "Float32", 1, p.density);
-  a.add("pressure", "Float32", 1, p.pressure);
-  a.add("surface_area", "Float32", 1, p.surface_area);
-  a.add("id", "UInt32", 1, p.id);
-  const std::size_t point_arrays = 8;
-  a.add("", "Float32", 3, flatten(p.position));
+  // One statement per array: the block's layout follows the order of the calls.
+  std::string point_data;
+  point_data += a.add("velocity", "Float32", 3, flatten(p.velocity));
+  point_data += a.add("weight", "Float32", 1, p.weight);
+  point_data += a.add("radius", "Float32", 1, column<float>(n, [&](std::size_t i) { return particle_radius_of(radius, p.weight[i]); }));
+  point_data += a.add("temperature", "Float32", 1, p.temperature);
+  point_data += a.add("density", "Float32", 1, p.density);
+  point_data += a.add("pressure", "Float32", 1, p.pressure);
+  point_data += a.add("surface_area", "Float32", 1, p.surface_area);
+  point_data += a.add("id", "UInt32", 1, p.id);
+  const std::string points = a.add("", "Float32", 3, flatten(p.position));
   // One vertex cell per particle, so that every representation shows them.
-  a.add("connectivity", "Int64", 1, column<std::int64_t>(n, [](std::size_t i) { return static_cast<std::int64_t>(i); }));
-  a.add("offsets", "Int64", 1, column<std::int64_t>(n, [](std::size_t i) { return static_cast<std::int64_t>(i + 1); }));
+  std::string verts;
+  verts += a.add("connectivity", "Int64", 1, column<std::int64_t>(n, [](std::size_t i) { return static_cast<std::int64_t>(i); }));
+  verts += a.add("offsets", "Int64", 1, column<std::int64_t>(n, [](std::size_t i) { return static_cast<std::int64_t>(i + 1); }));
   write_atomically(file, [&](std::ostream& out) {
     write_header(out, "PolyData");
     out << " <PolyData>\n  <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
         << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-        << "   <PointData Scalars=\"temperature\" Vectors=\"velocity\">\n";
-    for (std::size_t k = 0; k < point_arrays; ++k) out << "    " << a.tag(k) << "\n";
-    out << "   </PointData>\n   <Points>\n    " << a.tag(point_arrays) << "\n   </Points>\n"
-        << "   <Verts>\n    " << a.tag(point_arrays + 1) << "\n    " << a.tag(point_arrays + 2) << "\n   </Verts>\n"
-        << "  </Piece>\n </PolyData>\n";
+        << "   <PointData Scalars=\"temperature\" Vectors=\"velocity\">\n" << point_data << "   </PointData>\n"
+        << "   <Points>\n" << points << "   </Points>\n   <Verts>\n" << verts << "   </Verts>\n  </Piece>\n </PolyData>\n";
     a.write_data(out);
     out << "</VTKFile>\n";
   });
@@ -103,24 +100,24 @@ void write_particles_vtp(const std::filesystem::path& file, const ParticleSnapsh
 void write_air_vti(const std::filesystem::path& file, const AirSnapshot& air) {
   const MacGrid& g = air.grid;
   const std::size_t cells = g.cell_count();
-  AppendedArrays a;
-  a.add("vapor_density", "Float32", 1, column<float>(cells, [&](std::size_t c) { return static_cast<float>(air.vapor[c]); }));
-  a.add("temperature", "Float32", 1, air.temperature);
   std::vector<Vec3> velocity(cells);
   for (int k = 0; k < g.nz; ++k)
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) velocity[g.cell(i, j, k)] = air.cell_velocity(i, j, k);
-  a.add("velocity", "Float32", 3, flatten(velocity));
-  a.add("kind", "UInt8", 1, air.kind);
+  AppendedArrays a;
+  std::string cell_data;
+  cell_data += a.add("vapor_density", "Float32", 1, column<float>(cells, [&](std::size_t c) { return static_cast<float>(air.vapor[c]); }));
+  cell_data += a.add("temperature", "Float32", 1, air.temperature);
+  cell_data += a.add("velocity", "Float32", 3, flatten(velocity));
+  cell_data += a.add("kind", "UInt8", 1, air.kind);
   write_atomically(file, [&](std::ostream& out) {
     write_header(out, "ImageData");
     // Cells in x-fastest order, as VTK's image cells are.
     out << " <ImageData WholeExtent=\"0 " << g.nx << " 0 " << g.ny << " 0 " << g.nz << "\" Origin=\"" << g.origin.x << " "
         << g.origin.y << " " << g.origin.z << "\" Spacing=\"" << g.dx << " " << g.dx << " " << g.dx << "\">\n"
         << "  <Piece Extent=\"0 " << g.nx << " 0 " << g.ny << " 0 " << g.nz << "\">\n"
-        << "   <CellData Scalars=\"vapor_density\" Vectors=\"velocity\">\n";
-    for (std::size_t k = 0; k < 4; ++k) out << "    " << a.tag(k) << "\n";
-    out << "   </CellData>\n  </Piece>\n </ImageData>\n";
+        << "   <CellData Scalars=\"vapor_density\" Vectors=\"velocity\">\n" << cell_data << "   </CellData>\n"
+        << "  </Piece>\n </ImageData>\n";
     a.write_data(out);
     out << "</VTKFile>\n";
   });
