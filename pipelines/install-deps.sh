@@ -7,6 +7,8 @@
 # readers test, tests/cli/readers_cli_test.cpp;
 # python3-vtk9 and python3-numpy to read dewpoint-simulate --paraview's
 # files back with VTK's own readers (tests/cli/paraview_series_test.py);
+# blender to open a shot in it, pipelines/blender/import_shot.py, and for
+# its headless test, tests/cli/blender_import_test.py (about 200 MB);
 # gnuplot, the DejaVu fonts and python3 for `make figures` and
 # pipelines/make-assets.py; patchelf for the GPU bundle, pipelines/gpu-bundle.sh,
 # and debootstrap for its test in a minimal Debian, tests/bundle).
@@ -21,6 +23,7 @@ packages=(
   clang libclang-rt-14-dev libomp-dev
   slurm-wlm munge python3 assimp-utils libopenvdb-tools python3-vtk9 python3-numpy
   gnuplot-nox fonts-dejavu-core
+  blender
   patchelf debootstrap
 )
 
