@@ -53,12 +53,12 @@ void settle_liquid(dp::Simulation& simulation, const dp::SettleSettings& settle,
     halvings += report.pressure_halvings;
     last = report;
     if (dp::io::logs(level, dp::io::LogLevel::Debug))
-      std::cerr << "dewpoint-simulate: settling step " << steps << ": dt=" << report.dt << " s  PCISPH "
+      std::cerr << "dewpoint-simulate: settling step " << steps << ": dt=" << report.dt << " s  pressure solve "
                 << report.pressure_iterations << " it, density error " << 100.0 * report.density_error << " %\n";
   });
   if (dp::io::logs(level, dp::io::LogLevel::Info))
     std::cerr << "dewpoint-simulate: settled the liquid for " << settle.duration << " s in " << steps << " steps (last dt "
-              << last.dt << " s, " << halvings << " halved for PCISPH); velocities set to zero at t = 0\n";
+              << last.dt << " s, " << halvings << " halved for the pressure solve); velocities set to zero at t = 0\n";
 }
 
 // The newest intact checkpoint of OUT, checked against the scene; none when
@@ -232,11 +232,18 @@ int run(const Options& opt) {
     const dp::StepReport& last = simulation->last_step();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
     const double steps_per_s = seconds > 0 ? static_cast<double>(simulation->step_count() - first_step) / seconds : 0.0;
-    char detail[200];
-    std::snprintf(detail, sizeof detail, "t=%.4f s  step %lld (%.1f steps/s)  dt=%.2e s  PCISPH %d it, density error %.3f %%",
-                  simulation->time(), static_cast<long long>(simulation->step_count()), steps_per_s, last.dt,
-                  last.pressure_iterations, 100.0 * last.density_error);
+    char detail[240];
+    if (setup.pressure.method == dp::PressureSolverMethod::Dfsph)
+      std::snprintf(detail, sizeof detail,
+                    "t=%.4f s  step %lld (%.1f steps/s)  dt=%.2e s  DFSPH divergence %d it, density %d it, density error %.3f %%",
+                    simulation->time(), static_cast<long long>(simulation->step_count()), steps_per_s, last.dt,
+                    last.divergence_iterations, last.pressure_iterations, 100.0 * last.density_error);
+    else
+      std::snprintf(detail, sizeof detail, "t=%.4f s  step %lld (%.1f steps/s)  dt=%.2e s  PCISPH %d it, density error %.3f %%",
+                    simulation->time(), static_cast<long long>(simulation->step_count()), steps_per_s, last.dt,
+                    last.pressure_iterations, 100.0 * last.density_error);
     std::string line = detail;
+    if (dp::io::logs(opt.level, dp::io::LogLevel::Debug)) line += std::string("  (dt set by ") + last.limited_by + ")";
     if (setup.air) {
       char air[96];
       std::snprintf(air, sizeof air, "  air CG %d it, residual %.1e", last.air.projection_iterations,

@@ -38,9 +38,15 @@ struct RigidMaterial {
   float specific_heat = 840.0f;    // J/(kg K)
 };
 
-// PCISPH (Solenthaler & Pajarola 2009) stopping rule.
+// Which pressure solver: PCISPH as the paper (Solenthaler & Pajarola 2009),
+// or divergence-free SPH (Bender & Koschier 2017, sph/dfsph_bender2017.h).
+enum class PressureSolverMethod { Pcisph, Dfsph };
+
+// The pressure solver and its stopping rule.
 struct PressureSolverSettings {
+  PressureSolverMethod method = PressureSolverMethod::Pcisph;
   float max_density_error = 0.005f;  // eta: average (rho* - rho0)/rho0
+  float max_divergence_error = 0.001f;  // DFSPH's eta_v: average max(D rho/Dt, 0) dt / rho0
   int min_iterations = 3;
   int max_iterations = 100;
   // Start each solve from the last step's pressures instead of zero
@@ -99,7 +105,9 @@ struct SimulationSetup {
 // What one step did, for logs and the timing tables.
 struct StepReport {
   float dt = 0;                 // s
-  int pressure_iterations = 0;
+  const char* limited_by = "";  // the rule that set dt (sph/time_step.h: step_limit_name); "convergence" also when halved
+  int pressure_iterations = 0;  // PCISPH's, or DFSPH's density solve's
+  int divergence_iterations = 0;  // DFSPH's divergence solve (0 with PCISPH)
   int pressure_halvings = 0;    // times PCISPH missed eta at its cap and the step was halved (CFL mode)
   float density_error = 0;      // average (rho* - rho0)/rho0 after the last iteration
   double seconds_neighbours = 0, seconds_pressure = 0, seconds_heat = 0, seconds_other = 0;  // wall clock

@@ -14,6 +14,7 @@
 #include "sph/adaptivity_winchenbach2017_driver.h"
 #include "sph/boundary_akinci2012.h"
 #include "sph/density.h"
+#include "sph/dfsph_bender2017.h"
 #include "sph/heat_cleary_monaghan1999.h"
 #include "sph/particle_grid.h"
 #include "sph/pcisph_solenthaler2009.h"
@@ -280,7 +281,8 @@ class SimulationImpl final : public Simulation {
   void resize_scratch(std::size_t n) {
     for (auto* b : {&position_tmp_, &velocity_tmp_, &predicted_, &nonpressure_acc_, &pressure_acc_, &normal_, &tension_acc_})
       b->resize(n);
-    for (auto* b : {&temperature_tmp_, &density_, &pressure_, &pressure_start_, &density_error_, &surface_area_, &liquid_rate_})
+    for (auto* b : {&temperature_tmp_, &density_, &pressure_, &pressure_start_, &density_error_, &surface_area_, &liquid_rate_,
+                    &dfsph_factor_, &stiffness_, &divergence_pressure_})
       b->resize(n);
     id_tmp_.resize(n);
     units_tmp_.resize(n);
@@ -358,8 +360,9 @@ class SimulationImpl final : public Simulation {
     exec_.parallel_for(m, IntegrateTemperature{Exec::ptr(rigid_rate_), Exec::ptr(rigid_held_), dt, Exec::ptr(rigid_temperature_)});
   }
 
-  float next_time_step() const {
+  float next_time_step() {
     const TimeStepSettings& ts = setup_.time_step;
+    step_limit_ = StepLimit::MaxStep;
     if (ts.mode == TimeStepMode::Fixed) return ts.max_step;
     const std::size_t n = liquid_.position.size();
     float vmax = exec_.max(n, SpeedOf{Exec::ptr(liquid_.velocity)}, 0.0f);
@@ -367,8 +370,14 @@ class SimulationImpl final : public Simulation {
     // alone before the first step.
     float amax = length(setup_.gravity);
     if (steps_ > 0 || settling_steps_ > 0) amax = std::fmax(amax, last_max_acceleration_);
-    float dt = converged_limit_.bound(cfl_time_step(setup_.particle_spacing, vmax, amax, ts.cfl_number, ts.force_number,
-                                                    std::fmin(ts.max_step, diffusion_dt_limit_)));
+    StepLimit by = StepLimit::MaxStep;
+    const float longest = std::fmin(ts.max_step, diffusion_dt_limit_);
+    const float cfl = dfsph() ? travel_time_step(setup_.particle_spacing, vmax, amax, ts.cfl_number, longest, &by)
+                              : cfl_time_step(setup_.particle_spacing, vmax, amax, ts.cfl_number, ts.force_number, longest, &by);
+    if (by == StepLimit::MaxStep && diffusion_dt_limit_ < ts.max_step) by = StepLimit::Diffusion;
+    const float dt = converged_limit_.bound(cfl);
+    if (dt < cfl) by = StepLimit::Convergence;
+    step_limit_ = by;
     if (dt < ts.min_step) {
       std::ostringstream s;
       s << "CFL time step " << dt << " s below the minimum " << ts.min_step << " s (max speed " << vmax
@@ -387,12 +396,13 @@ class SimulationImpl final : public Simulation {
     const bool running = phase == Phase::Running;
     StepReport report;
     report.dt = planned_dt;
+    report.limited_by = step_limit_name(step_limit_);
     // Alg. 1 line 18 of the previous step, run here so that the state a
     // frame sees (positions and the step's densities, pressures, areas) is
     // of one particle set.
     // A warm solve reads each particle's pressure from the last step, which
     // merging and removal leave to other particles.
-    bool warm = setup_.pressure.warm_start;
+    bool warm = setup_.pressure.warm_start && !dfsph();  // DFSPH solves from zero (sph/dfsph_bender2017.h)
     if (running && adapt_masses()) warm = false;
     auto t0 = Clock::now();
     sort_liquid();  // Alg. 1 line 3
@@ -407,6 +417,10 @@ class SimulationImpl final : public Simulation {
     const GridView liquid = liquid_grid_.view(liquid_.position);
     const GridView rigid = rigid_grid_.view(rigid_position_);
     exec_.parallel_for(n, ComputeDensity{listed_density(Exec::ptr(liquid_.position)), Exec::ptr(density_)});
+    if (dfsph()) {
+      exec_.parallel_for(n, ComputeDfsphFactor{listed_particles(), Exec::ptr(dfsph_factor_)});
+      solve_divergence(planned_dt, report);
+    }
     // The colour gradient serves twice: Akinci 2013's surface normals and
     // the particles' surface areas.
     exec_.parallel_for(n, ComputeSurfaceNormal{liquid, Exec::ptr(liquid_.units), Exec::ptr(density_), kernel_,
@@ -472,7 +486,12 @@ class SimulationImpl final : public Simulation {
                                     setup_.liquid.boundary_friction, Exec::ptr(velocity_tmp_)});
     liquid_.velocity.swap(velocity_tmp_);
     if (!running) exec_.parallel_for(n, DampVelocity{settling_damping_factor(setup_.settle.damping, dt), Exec::ptr(liquid_.velocity)});
-    last_max_acceleration_ = exec_.max(n, TotalAcceleration{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_)}, 0.0f);
+    // The force condition bounds explicit forces. DFSPH's pressure is implicit
+    // and follows the speeds, which the CFL condition bounds already (as in
+    // Bender & Koschier 2017); PCISPH keeps the published condition on the
+    // total acceleration.
+    last_max_acceleration_ = dfsph() ? exec_.max(n, MagnitudeOf{Exec::ptr(nonpressure_acc_)}, 0.0f)
+                                     : exec_.max(n, TotalAcceleration{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_)}, 0.0f);
     if (running) {
       ++steps_;
       time_ += dt;
@@ -599,6 +618,8 @@ class SimulationImpl final : public Simulation {
       converged = solve_pressure(dt, start, report);
     }
     report.pressure_halvings = halvings;
+    if (dfsph()) exec_.parallel_for(liquid_.position.size(), AddDivergencePressure{Exec::ptr(divergence_pressure_), Exec::ptr(pressure_)});
+    if (halvings > 0) report.limited_by = step_limit_name(StepLimit::Convergence);
     if (halvings > 0)
       converged_limit_.halved_to(dt);
     else if (converged)
@@ -606,18 +627,73 @@ class SimulationImpl final : public Simulation {
     return dt;
   }
 
+  bool dfsph() const { return setup_.pressure.method == PressureSolverMethod::Dfsph; }
+
+  ListedParticles listed_particles() const {
+    return ListedParticles{liquid_pairs_, rigid_pairs_, Exec::ptr(liquid_.position), Exec::ptr(rigid_position_),
+                          Exec::ptr(liquid_.units), Exec::ptr(rigid_volume_), Exec::ptr(density_), particle_mass_,
+                          setup_.liquid.rest_density};
+  }
+
+  // Bender & Koschier 2017, Alg. 2: the velocities made divergence-free
+  // (compression only) before the step's forces, at least one iteration.
+  void solve_divergence(float dt, StepReport& report) {
+    const std::size_t n = liquid_.position.size();
+    const PressureSolverSettings& ps = setup_.pressure;
+    const ListedParticles p = listed_particles();
+    exec_.parallel_for(n, ClearDivergencePressure{Exec::ptr(divergence_pressure_)});
+    int iteration = 0;
+    while (iteration < ps.max_iterations) {
+      exec_.parallel_for(n, ComputeDivergenceStiffness{p, Exec::ptr(liquid_.velocity), Exec::ptr(dfsph_factor_), dt, kDfsphRelaxation,
+                                                       Exec::ptr(stiffness_), Exec::ptr(density_error_)});
+      ++iteration;
+      if (average_density_error() <= ps.max_divergence_error) break;
+      exec_.parallel_for(n, AddStiffnessCorrection{p, Exec::ptr(stiffness_), dt, Exec::ptr(liquid_.velocity),
+                                                   Exec::ptr(divergence_pressure_)});
+    }
+    report.divergence_iterations = iteration;
+  }
+
+  // Bender & Koschier 2017, Alg. 3: pressure accelerations that leave the
+  // predicted velocities' density error below eta. Returns whether they do.
+  bool solve_density_dfsph(float dt, StepReport& report) {
+    const std::size_t n = liquid_.position.size();
+    const PressureSolverSettings& ps = setup_.pressure;
+    const ListedParticles p = listed_particles();
+    const AddStiffnessCorrection correct{p, Exec::ptr(stiffness_), 1.0f, Exec::ptr(pressure_acc_), Exec::ptr(pressure_)};
+    exec_.parallel_for(n, ClearPressure{Exec::ptr(pressure_), Exec::ptr(pressure_acc_)});
+    int iteration = 0;
+    float error = 0;
+    while (iteration < ps.max_iterations) {
+      exec_.parallel_for(n, PredictVelocity{Exec::ptr(liquid_.velocity), Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_), dt,
+                                            Exec::ptr(predicted_)});
+      exec_.parallel_for(n, ComputeDensityStiffness{p, Exec::ptr(predicted_), Exec::ptr(dfsph_factor_), dt, kDfsphRelaxation,
+                                                    Exec::ptr(stiffness_),
+                                                    Exec::ptr(density_error_)});
+      ++iteration;
+      error = average_density_error();
+      if (iteration >= ps.min_iterations && error <= ps.max_density_error) break;
+      exec_.parallel_for(n, correct);
+    }
+    report.pressure_iterations = iteration;
+    report.density_error = error;
+    return error <= ps.max_density_error;
+  }
+
+  float average_density_error() const {
+    const std::size_t n = liquid_.position.size();
+    return n > 0 ? static_cast<float>(exec_.sum(n, ValueOf{Exec::ptr(density_error_)}) / static_cast<double>(n)) : 0.0f;
+  }
+
   // Returns whether the average density error came below eta.
   bool solve_pressure(float dt, SolveStart start, StepReport& report) {
+    if (dfsph()) return solve_density_dfsph(dt, report);
     const std::size_t n = liquid_.position.size();
     const PressureSolverSettings& ps = setup_.pressure;
     const float delta = pcisph_delta(pcisph_sum_, dt, particle_mass_, setup_.liquid.rest_density);
     const CorrectPressure correct{listed_density(Exec::ptr(predicted_)), delta, Exec::ptr(pressure_),
                                   Exec::ptr(density_error_)};
-    const ComputePressureAcceleration pressure_acceleration{liquid_pairs_, rigid_pairs_, Exec::ptr(liquid_.position),
-                                                            Exec::ptr(rigid_position_), Exec::ptr(liquid_.units),
-                                                            Exec::ptr(rigid_volume_), Exec::ptr(pressure_),
-                                                            particle_mass_, setup_.liquid.rest_density,
-                                                            Exec::ptr(pressure_acc_)};
+    const ComputePressureAcceleration pressure_acceleration{listed_particles(), Exec::ptr(pressure_), Exec::ptr(pressure_acc_)};
     if (start == SolveStart::Cold) {
       exec_.parallel_for(n, ClearPressure{Exec::ptr(pressure_), Exec::ptr(pressure_acc_)});
     } else {
@@ -632,8 +708,7 @@ class SimulationImpl final : public Simulation {
       exec_.parallel_for(n, correct);
       exec_.parallel_for(n, pressure_acceleration);
       ++iteration;
-      const float* e = Exec::ptr(density_error_);
-      error = n > 0 ? static_cast<float>(exec_.sum(n, ValueOf{e}) / static_cast<double>(n)) : 0.0f;
+      error = average_density_error();
       if (iteration >= ps.min_iterations && error <= ps.max_density_error) break;
     }
     report.pressure_iterations = iteration;
@@ -734,6 +809,7 @@ class SimulationImpl final : public Simulation {
   Buffer<std::uint32_t> id_tmp_;
   Buffer<MassUnits> units_tmp_;
   Buffer<float> temperature_tmp_, density_, pressure_, pressure_start_, density_error_;
+  Buffer<float> dfsph_factor_, stiffness_, divergence_pressure_;  // DFSPH's alpha_i, kappa_i and its divergence solve's pressure
   Buffer<float> surface_area_, liquid_rate_;
   Buffer<Vec3> rigid_position_;
   Buffer<float> rigid_volume_, rigid_temperature_, rigid_rate_, rigid_adhesion_;
@@ -746,6 +822,7 @@ class SimulationImpl final : public Simulation {
   double time_ = 0;
   float last_max_acceleration_ = 0;
   ConvergedStepLimit converged_limit_;
+  StepLimit step_limit_ = StepLimit::MaxStep;  // of the step next_time_step last planned
   std::int64_t settling_steps_ = 0;  // taken by settle; its last acceleration bounds the first step
   StepReport report_;
   SurfaceTextures<Exec> surfaces_;

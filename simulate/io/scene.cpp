@@ -273,11 +273,18 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
   s.max_speed_m_s = positive(o, "max_speed_m_s", o.number("max_speed_m_s", s.max_speed_m_s));
   s.liquid = read_liquid(o.object("liquid"));
   if (auto p = o.optional_object("pressure_solver")) {
+    s.pressure_solver.method = p->string("method", s.pressure_solver.method);
+    if (s.pressure_solver.method != "pcisph" && s.pressure_solver.method != "dfsph")
+      throw p->error("method", "expected \"pcisph\" or \"dfsph\", found \"" + s.pressure_solver.method + "\"");
+    s.pressure_solver.max_divergence_error =
+        positive(*p, "max_divergence_error", p->number("max_divergence_error", s.pressure_solver.max_divergence_error));
     s.pressure_solver.max_density_error =
         positive(*p, "max_density_error", p->number("max_density_error", s.pressure_solver.max_density_error));
     s.pressure_solver.min_iterations = static_cast<int>(p->integer("min_iterations", s.pressure_solver.min_iterations));
     s.pressure_solver.max_iterations = static_cast<int>(p->integer("max_iterations", s.pressure_solver.max_iterations));
     s.pressure_solver.warm_start = p->boolean("warm_start", s.pressure_solver.warm_start);
+    if (s.pressure_solver.warm_start && s.pressure_solver.method == "dfsph")
+      throw p->error("warm_start", "a warm start is PCISPH's; DFSPH solves from zero (remove warm_start or use method \"pcisph\")");
     if (s.pressure_solver.min_iterations < 1) throw p->error("min_iterations", "expected a positive integer");
     if (s.pressure_solver.max_iterations < s.pressure_solver.min_iterations)
       throw p->error("max_iterations", "expected at least min_iterations");

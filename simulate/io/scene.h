@@ -73,7 +73,9 @@ struct LiquidSettings {
 };
 
 struct PressureSolverSettings {
+  std::string method = "pcisph";  // or "dfsph"
   double max_density_error = 0.005;
+  double max_divergence_error = 0.001;
   int min_iterations = 3;
   int max_iterations = 100;
   bool warm_start = false;

@@ -147,7 +147,9 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   setup.time_step.mode = s.cfl_time_step ? TimeStepMode::Cfl : TimeStepMode::Fixed;
   setup.time_step.max_step = static_cast<float>(s.time_step_s);
   setup.time_step.cfl_number = static_cast<float>(s.cfl_number);
+  setup.pressure.method = s.pressure_solver.method == "dfsph" ? PressureSolverMethod::Dfsph : PressureSolverMethod::Pcisph;
   setup.pressure.max_density_error = static_cast<float>(s.pressure_solver.max_density_error);
+  setup.pressure.max_divergence_error = static_cast<float>(s.pressure_solver.max_divergence_error);
   setup.pressure.min_iterations = s.pressure_solver.min_iterations;
   setup.pressure.max_iterations = s.pressure_solver.max_iterations;
   setup.pressure.warm_start = s.pressure_solver.warm_start;

@@ -170,8 +170,7 @@ TEST(CpuBackend, BlockedSumAddsInTheWarpOrderBitForBit) {
   }
 }
 
-TEST(Simulation, CpuStepsAreBitIdenticalForAnyThreadCount) {
-  SimulationSetup setup = test::block_over_plate(10, 8, 10);
+void expect_steps_bit_identical_for_any_thread_count(const SimulationSetup& setup) {
   auto run = [&](int threads) {
     auto sim = make_simulation(ExecutionConfig{Device::Cpu, threads}, setup);
     for (int i = 0; i < 40; ++i) sim->step();
@@ -185,6 +184,17 @@ TEST(Simulation, CpuStepsAreBitIdenticalForAnyThreadCount) {
   EXPECT_TRUE(bitwise_equal(one.id, two.id));
   EXPECT_TRUE(bitwise_equal(one.position, five.position));
   EXPECT_TRUE(bitwise_equal(one.velocity, five.velocity));
+  EXPECT_TRUE(bitwise_equal(one.pressure, five.pressure));
+}
+
+TEST(Simulation, CpuStepsAreBitIdenticalForAnyThreadCount) {
+  expect_steps_bit_identical_for_any_thread_count(test::block_over_plate(10, 8, 10));
+}
+
+TEST(Simulation, DfsphCpuStepsAreBitIdenticalForAnyThreadCount) {
+  SimulationSetup setup = test::block_over_plate(10, 8, 10);
+  setup.pressure.method = PressureSolverMethod::Dfsph;
+  expect_steps_bit_identical_for_any_thread_count(setup);
 }
 
 }  // namespace

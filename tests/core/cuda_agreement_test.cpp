@@ -60,5 +60,12 @@ TEST_F(CudaAgreement, ViscousSimulationMatchesCpuAfter20Steps) {
   expect_backends_agree_after_20_steps(setup);
 }
 
+// Divergence-free SPH (Bender & Koschier 2017): both solves on both backends.
+TEST_F(CudaAgreement, DfsphSimulationMatchesCpuAfter20Steps) {
+  SimulationSetup setup = test::block_over_plate(12, 10, 12);
+  setup.pressure.method = PressureSolverMethod::Dfsph;
+  expect_backends_agree_after_20_steps(setup);
+}
+
 }  // namespace
 }  // namespace dp

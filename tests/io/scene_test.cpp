@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "scene.h"
+#include "simulation_setup.h"
 
 namespace fs = std::filesystem;
 
@@ -75,6 +76,21 @@ TEST(Scene, LevelSetAndViscosityKeys) {
   doc["mesh"]["level_set"] = false;
   doc["simulation"]["liquid"]["kinematic_viscosity_m2_s"] = -1;
   EXPECT_NE(error_of(doc, "bad_nu.json").find("simulation.liquid.kinematic_viscosity_m2_s"), std::string::npos);
+}
+
+TEST(Scene, PressureSolverMethodKeys) {
+  auto doc = demo_document();
+  EXPECT_EQ(load_scene(write_scene(doc, "defaults.json")).simulation.pressure_solver.method, "pcisph");
+  doc["simulation"]["pressure_solver"] = {{"method", "dfsph"}, {"max_divergence_error", 0.002}};
+  const Scene s = load_scene(write_scene(doc, "dfsph.json"));
+  EXPECT_EQ(s.simulation.pressure_solver.method, "dfsph");
+  EXPECT_DOUBLE_EQ(s.simulation.pressure_solver.max_divergence_error, 0.002);
+  EXPECT_EQ(make_simulation_setup(s).pressure.method, dp::PressureSolverMethod::Dfsph);
+  doc["simulation"]["pressure_solver"]["warm_start"] = true;
+  EXPECT_NE(error_of(doc, "dfsph_warm.json").find("simulation.pressure_solver.warm_start"), std::string::npos);
+  doc["simulation"]["pressure_solver"] = {{"method", "iisph"}};
+  const std::string e = error_of(doc, "bad_method.json");
+  EXPECT_NE(e.find("simulation.pressure_solver.method: expected \"pcisph\" or \"dfsph\", found \"iisph\""), std::string::npos) << e;
 }
 
 TEST(Scene, WrongTypeNamesExpectedAndFound) {

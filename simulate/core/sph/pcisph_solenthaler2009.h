@@ -8,6 +8,7 @@
 #include "backend/host_device.h"
 #include "sph/density.h"
 #include "sph/kernel_cubic_spline.h"
+#include "sph/listed_particles.h"
 #include "sph/mass_units.h"
 #include "sph/neighbor_list.h"
 #include "sph/uniform_grid.h"
@@ -85,34 +86,22 @@ struct CorrectPressure {
 // the denominators; Akinci 2012 Eq. 10 for the boundary), with the pairs'
 // gradient factors the step's lists keep (FillNeighbors).
 struct ComputePressureAcceleration {
-  ListedPairs liquid_pairs;
-  ListedPairs rigid_pairs;
-  const Vec3* position;
-  const Vec3* rigid_position;
-  const MassUnits* units;
-  const float* rigid_volume;
+  ListedParticles p;
   const float* pressure;
-  float particle_mass;
-  float rest_density;
   Vec3* acceleration;
   DP_HD void operator()(std::size_t i) const {
-    const Vec3 xi = position[i];
-    const float inv_rho2 = 1.0f / (rest_density * rest_density);
+    const float inv_rho2 = 1.0f / (p.rest_density * p.rest_density);
     const float pi = pressure[i];
     Vec3 a{};
-    const NeighborList& liquid = liquid_pairs.list;
+    const NeighborList& liquid = p.liquid_pairs.list;
     for (std::uint32_t k = liquid.offset[i]; k < liquid.offset[i + 1]; ++k) {
       const std::uint32_t j = liquid.index[k];
       if (j == i) continue;
-      const Vec3 grad = liquid_pairs.gradient_factor[k] * (xi - position[j]);
-      a -= (particle_mass * weight_of(units[j]) * (pi + pressure[j]) * inv_rho2) * grad;
+      a -= (p.mass(j) * (pi + pressure[j]) * inv_rho2) * p.liquid_gradient(i, k);
     }
-    const NeighborList& rigid = rigid_pairs.list;
-    for (std::uint32_t k = rigid.offset[i]; k < rigid.offset[i + 1]; ++k) {
-      const std::uint32_t b = rigid.index[k];
-      const Vec3 grad = rigid_pairs.gradient_factor[k] * (xi - rigid_position[b]);
-      a -= (rest_density * rigid_volume[b] * pi * inv_rho2) * grad;
-    }
+    const NeighborList& rigid = p.rigid_pairs.list;
+    for (std::uint32_t k = rigid.offset[i]; k < rigid.offset[i + 1]; ++k)
+      a -= (p.rest_density * p.rigid_volume[rigid.index[k]] * pi * inv_rho2) * p.rigid_gradient(i, k);
     acceleration[i] = a;
   }
 };

@@ -43,11 +43,14 @@ float largest_speed(const Simulation& sim) {
   return v;
 }
 
-// Run for PCISPH as published (each solve from zero) and warm-started.
-void check_settled_column_is_incompressible_and_hydrostatic(bool warm_start) {
+// Run for PCISPH as published (each solve from zero), warm-started, and
+// for DFSPH.
+void check_settled_column_is_incompressible_and_hydrostatic(bool warm_start,
+                                                           PressureSolverMethod method = PressureSolverMethod::Pcisph) {
   const float s = 0.01f;
   ColumnInTank column = column_in_tank(s, 8, 24, 8);
   column.setup.pressure.warm_start = warm_start;
+  column.setup.pressure.method = method;
   const SimulationSetup& setup = column.setup;
   const float lx = column.lx, lz = column.lz;
 
@@ -138,6 +141,11 @@ TEST(Hydrostatics, SettledColumnIsIncompressibleAndPressureIsRhoGDepth) {
 
 TEST(Hydrostatics, WarmStartedSettledColumnIsIncompressibleAndPressureIsRhoGDepth) {
   check_settled_column_is_incompressible_and_hydrostatic(true);
+}
+
+// DFSPH's pressure p_i is the sum of both solves' kappa_i rho_i.
+TEST(Hydrostatics, DfsphSettledColumnIsIncompressibleAndPressureIsRhoGDepth) {
+  check_settled_column_is_incompressible_and_hydrostatic(false, PressureSolverMethod::Dfsph);
 }
 
 // Liquid at rest stays at rest across a frame that ends just after a whole
