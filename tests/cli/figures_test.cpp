@@ -1,6 +1,8 @@
 // The figure pipeline (pipelines/figures.mk) as `make -C pipelines figures`
 // runs it, on the cheapest scene: its targets produce their files, and a
 // second run finds nothing to do.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -29,7 +31,7 @@ std::pair<int, int> image_size(const fs::path& file) {
 }
 
 TEST(Figures, PreviewTargetsProduceTheirFilesAndAreIncremental) {
-  const fs::path out = fs::temp_directory_path() / "dewpoint-figures-test";
+  const fs::path out = fs::temp_directory_path() / ("dewpoint-figures-test-" + std::to_string(getpid()));
   fs::remove_all(out);
   const auto first = test::run_command(make_figures(out, "-j2"));
   ASSERT_EQ(first.exit_code, 0) << first.output;

@@ -1,6 +1,8 @@
 // The whole flow of DESIGN §1 through the three executables: a shortened
 // demo scene is simulated, meshed and rendered, and the liquid shows in the
 // image: pixels differ from a render of the same frame without liquid.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
@@ -35,7 +37,7 @@ std::vector<float> read_rgb(const fs::path& file, int& width, int& height) {
 }
 
 TEST(Pipeline, SimulateMeshRenderShowsTheLiquid) {
-  const fs::path work = fs::temp_directory_path() / "dewpoint-pipeline-test";
+  const fs::path work = fs::temp_directory_path() / ("dewpoint-pipeline-test-" + std::to_string(getpid()));
   fs::remove_all(work);
   fs::create_directories(work / "scenes");
   fs::create_directories(work / "meshes");

@@ -2,6 +2,8 @@
 // JSON merge patch applied before validation. The merge cases are the
 // RFC's own examples (RFC 7386, Appendix A); the rest checks that patched
 // values reach the settings and that bad presets are reported.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -26,7 +28,7 @@ nlohmann::json demo_with_presets(const nlohmann::json& presets) {
 
 // Beside the demo scene, so its relative mesh path resolves.
 fs::path write_beside_demo(const nlohmann::json& doc, const std::string& name) {
-  const fs::path file = fs::temp_directory_path() / "dewpoint-preset-test" / "scenes" / name;
+  const fs::path file = fs::temp_directory_path() / ("dewpoint-preset-test-" + std::to_string(getpid())) / "scenes" / name;
   fs::create_directories(file.parent_path());
   fs::create_directories(file.parent_path().parent_path() / "meshes");
   fs::copy_file(fs::path(DEWPOINT_SOURCE_DIR) / "assets/meshes/tray.obj", file.parent_path().parent_path() / "meshes/tray.obj",

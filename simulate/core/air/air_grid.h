@@ -281,7 +281,7 @@ class AirGrid {
       const double* fy = Exec::ptr(vapor_flux_[1]);
       const double* fz = Exec::ptr(vapor_flux_[2]);
       if (faces_.any_open()) {
-        const std::size_t boundary = OpenFaceVaporMass::face_count(grid_);
+        const std::size_t boundary = boundary_face_count(grid_);
         ledger_.open_in += exec.sum(boundary, OpenFaceVaporMass{grid_, fx, fy, fz, true});
         ledger_.open_out += exec.sum(boundary, OpenFaceVaporMass{grid_, fx, fy, fz, false});
       }
@@ -302,18 +302,28 @@ class AirGrid {
   int diffuse(const Exec& exec, float dt) {
     const double dx2 = static_cast<double>(grid_.dx) * grid_.dx;
     const double d_max = std::fmax(settings_.vapor_diffusivity, settings_.heat_diffusivity);
-    const double number = 6.0 * d_max * dt / dx2;
+    // A cell's weights on its neighbours sum to 6 rate, or up to 9 rate in a
+    // corner of open faces (2 rate each); below 1 the update is a convex
+    // combination and cannot overshoot.
+    const double number = (faces_.any_open() ? 9.0 : 6.0) * d_max * dt / dx2;
     if (!(d_max > 0)) return 0;
     const int substeps = number > kMaxDiffusionNumber ? static_cast<int>(std::ceil(number / kMaxDiffusionNumber)) : 1;
     const double h = static_cast<double>(dt) / substeps;
     for (int s = 0; s < substeps; ++s) {
       if (settings_.vapor_diffusivity > 0) {
-        exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, DiffuseExplicit<double>{cells(), Exec::ptr(vapor_), settings_.vapor_diffusivity * h / dx2,
-                                                     Exec::ptr(vapor_tmp_)});
+        const double rate = settings_.vapor_diffusivity * h / dx2;
+        if (faces_.any_open()) {
+          const std::size_t boundary = boundary_face_count(grid_);
+          ledger_.open_in += exec.sum(boundary, OpenFaceDiffusion{cells(), Exec::ptr(vapor_), rate, settings_.ambient_vapor, true});
+          ledger_.open_out += exec.sum(boundary, OpenFaceDiffusion{cells(), Exec::ptr(vapor_), rate, settings_.ambient_vapor, false});
+        }
+        exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz,
+                             DiffuseExplicit<double>{cells(), Exec::ptr(vapor_), rate, settings_.ambient_vapor, Exec::ptr(vapor_tmp_)});
         vapor_.swap(vapor_tmp_);
       }
       if (settings_.heat_diffusivity > 0) {
-        exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, DiffuseExplicit<float>{cells(), Exec::ptr(temperature_excess_), settings_.heat_diffusivity * h / dx2,
+        // The temperature is kept as its excess over the ambient, 0 outside.
+        exec.parallel_for_3d(grid_.nx, grid_.ny, grid_.nz, DiffuseExplicit<float>{cells(), Exec::ptr(temperature_excess_), settings_.heat_diffusivity * h / dx2, 0.0f,
                                                     Exec::ptr(temperature_tmp_)});
         temperature_excess_.swap(temperature_tmp_);
       }

@@ -5,10 +5,14 @@
 // is conserved to rounding. Explicit, sub-stepped below the stability bound
 // 6 D dt / dx^2 <= 1 (AirGrid chooses the sub-steps): for air's diffusivities
 // (~2e-5 m^2/s) and cells of centimetres that bound is seconds, so one
-// sub-step is the rule. No flux through walls, rigid or liquid cells, or the
-// open faces (heat and vapor exchange with particles is the coupling's,
-// paper Sec. 5-6).
+// sub-step is the rule. No flux through walls or rigid or liquid cells (heat
+// and vapor exchange with particles is the coupling's, paper Sec. 5-6). An
+// open domain face has the ambient value on it (the air outside, as far as
+// the grid knows, is the ambient air): a boundary cell exchanges
+// 2 D dt (phi_ambient - phi) / dx^2 through it, half a cell being the
+// distance, and OpenFaceDiffusion gives the ledger what crossed.
 #include "air/cell_kind.h"
+#include "air/vapor_transport_fv.h"
 #include "math/keep_if.h"
 
 namespace dp {
@@ -18,6 +22,7 @@ struct DiffuseExplicit {
   CellKinds cells;
   const T* in;
   double rate;  // D dt / dx^2
+  T ambient;    // on the open faces
   T* out;
 
   DP_HD void operator()(int i, int j, int k) const {
@@ -71,7 +76,16 @@ struct DiffuseExplicit {
     sum += exchange(src, kind, inside.y_high, c, row, here);
     sum += exchange(src, kind, inside.z_low, c, -slab, here);
     sum += exchange(src, kind, inside.z_high, c, slab, here);
+    if (cells.faces.any_open()) sum += open_exchange(inside, here);
     return pick_if(carries_air(kind[c]), static_cast<T>(here + rate * sum), src[c]);
+  }
+
+  // 2 (phi_ambient - phi_c) for each open domain face of the cell.
+  DP_HD_INLINE double open_exchange(const Neighbours& inside, double here) const {
+    const DomainFaces& f = cells.faces;
+    const int faces = int(!inside.x_low && f.open(0, 0)) + int(!inside.x_high && f.open(0, 1)) + int(!inside.y_low && f.open(1, 0)) +
+                      int(!inside.y_high && f.open(1, 1)) + int(!inside.z_low && f.open(2, 0)) + int(!inside.z_high && f.open(2, 1));
+    return 2.0 * faces * (static_cast<double>(ambient) - here);
   }
 
   // phi_n - phi_c where neighbour c + offset lies inside and carries air,
@@ -81,6 +95,24 @@ struct DiffuseExplicit {
                                       double here) {
     const std::size_t at = c + (inside ? offset : 0);
     return keep_if(static_cast<double>(src[at]) - here, inside & carries_air(kind[at]));
+  }
+};
+
+// The vapor that one diffusion sub-step moves through the open domain faces,
+// kg: entering (ambient above the boundary cell's) or leaving, as
+// DiffuseExplicit moves it, 2 rate (rho_ambient - rho_c) dx^3 per face.
+struct OpenFaceDiffusion {
+  CellKinds cells;
+  const double* vapor;
+  double rate;  // D dt / dx^2
+  double ambient;
+  bool entering;
+
+  DP_HD double operator()(std::size_t b) const {
+    const BoundaryFace face = boundary_face(cells.grid, b);
+    if (!cells.faces.open(face.axis, face.high ? 1 : 0) || !carries_air(cells.kind[face.cell])) return 0.0;
+    const double moved = 2.0 * rate * (ambient - vapor[face.cell]) * static_cast<double>(cells.grid.cell_volume());
+    return entering ? (moved > 0 ? moved : 0.0) : (moved < 0 ? -moved : 0.0);
   }
 };
 

@@ -194,6 +194,41 @@ struct TransportVapor {
 // `entering` or leaving, for the ledger. Summed over the boundary faces
 // alone (closed ones carry no flux): index b runs over the six sides in the
 // order x-, x+, y-, y+, z-, z+, each side's faces in its own row order.
+// The grid's boundary faces, side by side: x-, x+, y-, y+, z-, z+, each a
+// 2-D array over the other two axes, first one fastest. b in
+// [0, boundary_face_count) names one: its axis, side, face index and the
+// cell inside it.
+struct BoundaryFace {
+  int axis;
+  bool high;
+  std::size_t face, cell;
+};
+
+DP_HD inline std::size_t boundary_side_count(const MacGrid& g, int axis) {
+  return axis == 0 ? static_cast<std::size_t>(g.ny) * g.nz
+                   : (axis == 1 ? static_cast<std::size_t>(g.nx) * g.nz : static_cast<std::size_t>(g.nx) * g.ny);
+}
+DP_HD inline std::size_t boundary_face_count(const MacGrid& g) {
+  return 2 * (boundary_side_count(g, 0) + boundary_side_count(g, 1) + boundary_side_count(g, 2));
+}
+
+DP_HD inline BoundaryFace boundary_face(const MacGrid& g, std::size_t b) {
+  int axis = 0;
+  while (b >= 2 * boundary_side_count(g, axis)) b -= 2 * boundary_side_count(g, axis++);
+  const std::size_t per_side = boundary_side_count(g, axis);
+  const bool high = b >= per_side;
+  const std::size_t m = high ? b - per_side : b;
+  const int n0 = axis == 0 ? g.ny : g.nx;
+  const int p = static_cast<int>(m % n0), q = static_cast<int>(m / n0);
+  const int at = high ? g.n(axis) : 0;      // the face
+  const int inner = high ? g.n(axis) - 1 : 0;  // the cell inside it
+  if (axis == 0) return {0, high, g.face(0, at, p, q), g.cell(inner, p, q)};
+  if (axis == 1) return {1, high, g.face(1, p, at, q), g.cell(p, inner, q)};
+  return {2, high, g.face(2, p, q, at), g.cell(p, q, inner)};
+}
+
+// The vapor that the fluxes carry through the domain's faces, entering or
+// leaving, kg (summed over boundary_face_count by the caller).
 struct OpenFaceVaporMass {
   MacGrid grid;
   const double* flux_x;
@@ -201,28 +236,14 @@ struct OpenFaceVaporMass {
   const double* flux_z;
   bool entering;
 
-  DP_HD static std::size_t side_count(const MacGrid& g, int axis) {
-    return axis == 0 ? static_cast<std::size_t>(g.ny) * g.nz
-                     : (axis == 1 ? static_cast<std::size_t>(g.nx) * g.nz : static_cast<std::size_t>(g.nx) * g.ny);
-  }
-  DP_HD static std::size_t face_count(const MacGrid& g) { return 2 * (side_count(g, 0) + side_count(g, 1) + side_count(g, 2)); }
+  DP_HD static std::size_t face_count(const MacGrid& g) { return boundary_face_count(g); }
 
   DP_HD double operator()(std::size_t b) const {
-    const MacGrid& g = grid;
-    int axis = 0;
-    while (b >= 2 * side_count(g, axis)) b -= 2 * side_count(g, axis++);
-    const std::size_t per_side = side_count(g, axis);
-    const bool high = b >= per_side;
-    const std::size_t m = high ? b - per_side : b;
-    // The side's faces as a 2-D array over the other two axes, first one fastest.
-    const int n0 = axis == 0 ? g.ny : g.nx;
-    const int p = static_cast<int>(m % n0), q = static_cast<int>(m / n0);
-    const int at = high ? g.n(axis) : 0;
-    const std::size_t f = axis == 0 ? g.face(0, at, p, q) : (axis == 1 ? g.face(1, p, at, q) : g.face(2, p, q, at));
-    const double* flux = axis == 0 ? flux_x : (axis == 1 ? flux_y : flux_z);
+    const BoundaryFace face = boundary_face(grid, b);
+    const double* flux = face.axis == 0 ? flux_x : (face.axis == 1 ? flux_y : flux_z);
     // Outward flux is +G on the max side, -G on the min side.
-    const double outward = high ? flux[f] : -flux[f];
-    return side(outward) * static_cast<double>(g.cell_volume());
+    const double outward = face.high ? flux[face.face] : -flux[face.face];
+    return side(outward) * static_cast<double>(grid.cell_volume());
   }
   DP_HD double side(double outward) const { return entering ? (outward < 0 ? -outward : 0.0) : (outward > 0 ? outward : 0.0); }
 };

@@ -475,19 +475,23 @@ void expect_diffusion_rows_equal_cell_by_cell(std::mt19937& rng) {
       const float x = unit(rng);
       k = x < 0.7f ? kAirCell : (x < 0.8f ? kInflowCell : (x < 0.9f ? kSolidCell : kLiquidCell));
     }
-    const CellKinds cells{g, kind.data(), DomainFaces{}};
-    std::vector<T> one(in.size());
-    const DiffuseExplicit<T> by_cell{cells, in.data(), 0.15, one.data()};
-    for (int k = 0; k < g.nz; ++k)
-      for (int j = 0; j < g.ny; ++j)
-        for (int i = 0; i < g.nx; ++i) by_cell(i, j, k);
-    for (const CpuIsa isa : {CpuIsa::Baseline, CpuIsa::Avx2}) {
-      if (isa == CpuIsa::Avx2 && !cpu_runs_avx2_copy()) continue;
-      std::vector<T> rows(in.size());
-      CpuExec(1, isa).parallel_for_3d(g.nx, g.ny, g.nz, DiffuseExplicit<T>{cells, in.data(), 0.15, rows.data()});
-      for (std::size_t c = 0; c < in.size(); ++c)
-        ASSERT_EQ(std::memcmp(&one[c], &rows[c], sizeof(T)), 0) << sizeof(T) << "-byte values (" << cpu_isa_name(isa) << "), grid "
-                                                                 << g.nx << "x" << g.ny << "x" << g.nz << ", cell " << c;
+    // Closed, the top open (the scenes'), and every face open.
+    for (const unsigned open_mask : {0u, 1u << 3, 63u}) {
+      const CellKinds cells{g, kind.data(), DomainFaces{open_mask}};
+      std::vector<T> one(in.size());
+      const DiffuseExplicit<T> by_cell{cells, in.data(), 0.15, T(0.5), one.data()};
+      for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+          for (int i = 0; i < g.nx; ++i) by_cell(i, j, k);
+      for (const CpuIsa isa : {CpuIsa::Baseline, CpuIsa::Avx2}) {
+        if (isa == CpuIsa::Avx2 && !cpu_runs_avx2_copy()) continue;
+        std::vector<T> rows(in.size());
+        CpuExec(1, isa).parallel_for_3d(g.nx, g.ny, g.nz, DiffuseExplicit<T>{cells, in.data(), 0.15, T(0.5), rows.data()});
+        for (std::size_t c = 0; c < in.size(); ++c)
+          ASSERT_EQ(std::memcmp(&one[c], &rows[c], sizeof(T)), 0) << sizeof(T) << "-byte values (" << cpu_isa_name(isa) << "), grid "
+                                                                   << g.nx << "x" << g.ny << "x" << g.nz << ", cell " << c
+                                                                   << ", open faces " << open_mask;
+      }
     }
   }
 }
