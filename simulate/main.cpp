@@ -232,16 +232,17 @@ int run(const Options& opt) {
     const dp::StepReport& last = simulation->last_step();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
     const double steps_per_s = seconds > 0 ? static_cast<double>(simulation->step_count() - first_step) / seconds : 0.0;
-    char detail[240];
+    // The solver's part: PCISPH's iterations, or DFSPH's two solves'.
+    char solver[64];
     if (setup.pressure.method == dp::PressureSolverMethod::Dfsph)
-      std::snprintf(detail, sizeof detail,
-                    "t=%.4f s  step %lld (%.1f steps/s)  dt=%.2e s  DFSPH divergence %d it, density %d it, density error %.3f %%",
-                    simulation->time(), static_cast<long long>(simulation->step_count()), steps_per_s, last.dt,
-                    last.divergence_iterations, last.pressure_iterations, 100.0 * last.density_error);
+      std::snprintf(solver, sizeof solver, "DFSPH divergence %d it, density %d it", last.divergence_iterations,
+                    last.pressure_iterations);
     else
-      std::snprintf(detail, sizeof detail, "t=%.4f s  step %lld (%.1f steps/s)  dt=%.2e s  PCISPH %d it, density error %.3f %%",
-                    simulation->time(), static_cast<long long>(simulation->step_count()), steps_per_s, last.dt,
-                    last.pressure_iterations, 100.0 * last.density_error);
+      std::snprintf(solver, sizeof solver, "PCISPH %d it", last.pressure_iterations);
+    char detail[240];
+    std::snprintf(detail, sizeof detail, "t=%.4f s  step %lld (%.1f steps/s)  dt=%.2e s  %s, density error %.3f %%",
+                  simulation->time(), static_cast<long long>(simulation->step_count()), steps_per_s, last.dt, solver,
+                  100.0 * last.density_error);
     std::string line = detail;
     if (dp::io::logs(opt.level, dp::io::LogLevel::Debug)) line += std::string("  (dt set by ") + last.limited_by + ")";
     if (setup.air) {

@@ -619,10 +619,10 @@ class SimulationImpl final : public Simulation {
     }
     report.pressure_halvings = halvings;
     if (dfsph()) exec_.parallel_for(liquid_.position.size(), AddDivergencePressure{Exec::ptr(divergence_pressure_), Exec::ptr(pressure_)});
-    if (halvings > 0) report.limited_by = step_limit_name(StepLimit::Convergence);
-    if (halvings > 0)
+    if (halvings > 0) {
+      report.limited_by = step_limit_name(StepLimit::Convergence);
       converged_limit_.halved_to(dt);
-    else if (converged)
+    } else if (converged)
       converged_limit_.converged();
     return dt;
   }

@@ -12,7 +12,7 @@
 // 2 D dt (phi_ambient - phi) / dx^2 through it, half a cell being the
 // distance, and OpenFaceDiffusion gives the ledger what crossed.
 #include "air/cell_kind.h"
-#include "air/vapor_transport_fv.h"
+#include "air/boundary_faces.h"
 #include "math/keep_if.h"
 
 namespace dp {

@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "air/boundary_conditions.h"
+#include "air/boundary_faces.h"
 #include "air/cell_kind.h"
 #include "math/keep_if.h"
 
@@ -191,52 +192,14 @@ struct TransportVapor {
 };
 
 // Vapor mass (kg) through the domain's boundary faces in one sub-step,
-// `entering` or leaving, for the ledger. Summed over the boundary faces
-// alone (closed ones carry no flux): index b runs over the six sides in the
-// order x-, x+, y-, y+, z-, z+, each side's faces in its own row order.
-// The grid's boundary faces, side by side: x-, x+, y-, y+, z-, z+, each a
-// 2-D array over the other two axes, first one fastest. b in
-// [0, boundary_face_count) names one: its axis, side, face index and the
-// cell inside it.
-struct BoundaryFace {
-  int axis;
-  bool high;
-  std::size_t face, cell;
-};
-
-DP_HD inline std::size_t boundary_side_count(const MacGrid& g, int axis) {
-  return axis == 0 ? static_cast<std::size_t>(g.ny) * g.nz
-                   : (axis == 1 ? static_cast<std::size_t>(g.nx) * g.nz : static_cast<std::size_t>(g.nx) * g.ny);
-}
-DP_HD inline std::size_t boundary_face_count(const MacGrid& g) {
-  return 2 * (boundary_side_count(g, 0) + boundary_side_count(g, 1) + boundary_side_count(g, 2));
-}
-
-DP_HD inline BoundaryFace boundary_face(const MacGrid& g, std::size_t b) {
-  int axis = 0;
-  while (b >= 2 * boundary_side_count(g, axis)) b -= 2 * boundary_side_count(g, axis++);
-  const std::size_t per_side = boundary_side_count(g, axis);
-  const bool high = b >= per_side;
-  const std::size_t m = high ? b - per_side : b;
-  const int n0 = axis == 0 ? g.ny : g.nx;
-  const int p = static_cast<int>(m % n0), q = static_cast<int>(m / n0);
-  const int at = high ? g.n(axis) : 0;      // the face
-  const int inner = high ? g.n(axis) - 1 : 0;  // the cell inside it
-  if (axis == 0) return {0, high, g.face(0, at, p, q), g.cell(inner, p, q)};
-  if (axis == 1) return {1, high, g.face(1, p, at, q), g.cell(p, inner, q)};
-  return {2, high, g.face(2, p, q, at), g.cell(p, q, inner)};
-}
-
-// The vapor that the fluxes carry through the domain's faces, entering or
-// leaving, kg (summed over boundary_face_count by the caller).
+// `entering` or leaving, for the ledger: b runs over boundary_face_count
+// (air/boundary_faces.h); closed faces carry no flux.
 struct OpenFaceVaporMass {
   MacGrid grid;
   const double* flux_x;
   const double* flux_y;
   const double* flux_z;
   bool entering;
-
-  DP_HD static std::size_t face_count(const MacGrid& g) { return boundary_face_count(g); }
 
   DP_HD double operator()(std::size_t b) const {
     const BoundaryFace face = boundary_face(grid, b);

@@ -132,8 +132,7 @@ struct PredictVelocity {
 //       - sum_b Psi_b (kappa_i/rho_i) gradW_ib      (their Eq. 13, 8).
 // The density solve adds a_i to the pressure acceleration (scale 1), the
 // divergence solve dt a_i to the velocity (scale dt); each adds kappa_i rho_i
-// to its pressure (Pa), of which the step's is the sum (the frames write it,
-// a warm start reads it).
+// to its pressure (Pa), of which the step's is the sum (the frames write it).
 struct AddStiffnessCorrection {
   ListedParticles p;
   const float* stiffness;

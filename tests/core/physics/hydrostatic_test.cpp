@@ -12,36 +12,9 @@
 namespace dp {
 namespace {
 
-// A block of nx x ny x nz liquid particles at spacing s in an open tank of
-// inner size lx x ly x lz.
-struct ColumnInTank {
-  SimulationSetup setup;
-  float lx, ly, lz;
-};
-
-ColumnInTank column_in_tank(float s, int nx, int ny, int nz) {
-  ColumnInTank c;
-  SimulationSetup& setup = c.setup;
-  setup.particle_spacing = s;
-  setup.liquid.xsph_epsilon = 0.1f;  // damps the settling; the state at rest does not depend on it
-  setup.liquid.boundary_friction = 0.1f;
-  // The liquid starts 1.2 spacings from the walls: at exactly one spacing a
-  // single boundary layer (Akinci 2012) adds about 6 % density per wall, and
-  // removing that in the first step would take a jolt.
-  const float gap = 1.2f * s;
-  c.lx = (nx - 1) * s + 2 * gap, c.lz = (nz - 1) * s + 2 * gap, c.ly = (ny + 6) * s;
-  setup.rigid_position = test::open_tank(c.lx, c.ly, c.lz, s);
-  test::add_block(setup, Vec3{gap, gap, gap}, nx, ny, nz);
-  setup.domain_min = Vec3{-0.05f, -0.05f, -0.05f};
-  setup.domain_max = Vec3{c.lx + 0.05f, c.ly + 0.05f, c.lz + 0.05f};
-  return c;
-}
-
-float largest_speed(const Simulation& sim) {
-  float v = 0;
-  for (const Vec3& u : sim.particles().velocity) v = std::max(v, length(u));
-  return v;
-}
+using test::column_in_tank;
+using test::ColumnInTank;
+using test::largest_speed;
 
 // Run for PCISPH as published (each solve from zero), warm-started, and
 // for DFSPH.

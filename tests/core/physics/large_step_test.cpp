@@ -15,11 +15,7 @@
 namespace dp {
 namespace {
 
-float largest_speed(const Simulation& sim) {
-  float v = 0;
-  for (const Vec3& u : sim.particles().velocity) v = std::max(v, length(u));
-  return v;
-}
+using test::largest_speed;
 
 // The step the issue asks for: min(the scene's step, 0.4 spacings of
 // travel at the largest speed), gravity's share of the travel within the
@@ -85,21 +81,15 @@ TEST(LargeSteps, DfsphBlockThrownOntoTheFloorStaysAboveIt) {
 // the glass's 2 ms: DFSPH keeps every step at 2 ms, stays at rest and meets
 // eta; PCISPH's force condition holds the same column well below it.
 TEST(LargeSteps, DfsphSettledDeepColumnStepsAtTheGlassStep) {
-  const float s = 0.005f, gap = 1.2f * s;
-  const int nx = 6, ny = 60, nz = 6;
-  SimulationSetup setup;
-  setup.particle_spacing = s;
+  const float s = 0.005f;
+  const int layers = 60;
+  SimulationSetup setup = test::column_in_tank(s, 6, layers, 6).setup;
   setup.pressure.method = PressureSolverMethod::Dfsph;
-  setup.liquid.xsph_epsilon = 0.05f;
+  setup.liquid.xsph_epsilon = 0.05f;  // the glass scene's, as hydrostatic_test.cpp's deep column
   setup.liquid.boundary_friction = 0.02f;
   setup.settle.duration = 0.5f;
   setup.time_step.max_step = 2e-3f;
-  const float lx = (nx - 1) * s + 2 * gap, lz = (nz - 1) * s + 2 * gap, ly = (ny + 6) * s;
-  setup.rigid_position = test::open_tank(lx, ly, lz, s);
-  test::add_block(setup, Vec3{gap, gap, gap}, nx, ny, nz);
-  setup.domain_min = Vec3{-0.05f, -0.05f, -0.05f};
-  setup.domain_max = Vec3{lx + 0.05f, ly + 0.05f, lz + 0.05f};
-  const double torricelli = std::sqrt(2 * 9.81 * ny * s);
+  const double torricelli = std::sqrt(2 * 9.81 * layers * s);
 
   auto sim = make_simulation(ExecutionConfig{Device::Cpu, 0}, setup);
   sim->settle();
