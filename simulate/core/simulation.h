@@ -16,6 +16,7 @@
 #include "coupling/water_ledger.h"
 #include "math/vec3.h"
 #include "simulation_state.h"
+#include "sph/wall_shear_spalding1961.h"
 #include "surface/surface_texture_setup.h"
 
 namespace dp {
@@ -25,7 +26,8 @@ struct LiquidMaterial {
   float conductivity = 0.6f;        // kappa, W/(m K), water
   float specific_heat = 4186.0f;    // C, J/(kg K), water
   float xsph_epsilon = 0.02f;       // XSPH viscosity between liquid particles
-  float kinematic_viscosity = 0.0f; // nu, m^2/s (water 1e-6): Morris et al. 1997, no-slip at walls (0: none)
+  float kinematic_viscosity = 0.0f; // nu, m^2/s (water 1e-6): Morris et al. 1997 (0: none)
+  WallShear wall_shear = WallShear::NoSlip;  // how Morris's wall term shears the first layer
   float surface_tension = 0.0f;     // gamma of Akinci et al. 2013 (0: none)
   float boundary_friction = 0.02f;  // XSPH friction against rigid particles
   float temperature = 293.15f;      // K

@@ -456,7 +456,8 @@ class SimulationImpl final : public Simulation {
                                                    walls ? Exec::ptr(rigid_volume_) : nullptr, Exec::ptr(liquid_.velocity),
                                                    kernel_, particle_mass_, setup_.liquid.kinematic_viscosity,
                                                    wall_layer_volume_per_akinci_volume(kernel_, setup_.particle_spacing),
-                                                   Exec::ptr(nonpressure_acc_), liquid_pairs_, rigid_pairs_});
+                                                   Exec::ptr(nonpressure_acc_), liquid_pairs_, rigid_pairs_,
+                                                   setup_.liquid.wall_shear});
     }
     exec_.synchronize();
     other += seconds_since(t1);

@@ -85,6 +85,9 @@ LiquidSettings read_liquid(JsonObject o) {
   l.surface_tension = o.number("surface_tension", l.surface_tension);
   if (l.surface_tension < 0) throw o.error("surface_tension", "expected a non-negative number");
   l.boundary_friction = o.number("boundary_friction", l.boundary_friction);
+  l.wall_shear = o.string("wall_shear", l.wall_shear);
+  if (l.wall_shear != "no_slip" && l.wall_shear != "spalding1961")
+    throw o.error("wall_shear", "expected \"no_slip\" or \"spalding1961\", found \"" + l.wall_shear + "\"");
   l.temperature_k = kelvin_from_celsius(o, "temperature_c", o.number("temperature_c", 20));
   // XSPH blends towards the neighbours' mean velocity: beyond 1 it overshoots.
   if (l.xsph_epsilon < 0 || l.xsph_epsilon > 1) throw o.error("xsph_epsilon", "expected a number in [0, 1]");

@@ -68,7 +68,8 @@ struct LiquidSettings {
   double xsph_epsilon = 0.02;
   double kinematic_viscosity_m2_s = 1.0e-6;  // water at 20 C (Morris et al. 1997)
   double surface_tension = 0;  // gamma of Akinci et al. 2013
-  double boundary_friction = 0.02;
+  double boundary_friction = 0.02;  // XSPH wall friction: a per-step knob
+  std::string wall_shear = "spalding1961";  // the law of the wall, or "no_slip"
   double temperature_k = 293.15;
 };
 

@@ -180,6 +180,7 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   setup.coupling.air.specific_heat = static_cast<float>(s.coupling.air_specific_heat_j_kgk);
   setup.coupling.air.conductivity = static_cast<float>(s.coupling.air_conductivity_w_mk);
   setup.liquid.boundary_friction = static_cast<float>(s.liquid.boundary_friction);
+  setup.liquid.wall_shear = s.liquid.wall_shear == "spalding1961" ? WallShear::Spalding1961 : WallShear::NoSlip;
   setup.liquid.temperature = static_cast<float>(s.liquid.temperature_k);
   if (s.air) setup.air = make_air_settings(*s.air);
   for (const LiquidBlock& block : s.liquid_blocks) {

@@ -60,6 +60,16 @@ TEST_F(CudaAgreement, ViscousSimulationMatchesCpuAfter20Steps) {
   expect_backends_agree_after_20_steps(setup);
 }
 
+// Water's viscosity with Spalding's law of the wall: the block's 0.1 m/s
+// along the plate at 1 cm spacing puts its first layer at y+ ~ 60, where
+// the law of the wall shears about 4 times the laminar term.
+TEST_F(CudaAgreement, WallLawSimulationMatchesCpuAfter20Steps) {
+  SimulationSetup setup = test::block_over_plate(12, 10, 12);
+  setup.liquid.kinematic_viscosity = 1e-6f;
+  setup.liquid.wall_shear = WallShear::Spalding1961;
+  expect_backends_agree_after_20_steps(setup);
+}
+
 // Divergence-free SPH (Bender & Koschier 2017): both solves on both backends.
 TEST_F(CudaAgreement, DfsphSimulationMatchesCpuAfter20Steps) {
   SimulationSetup setup = test::block_over_plate(12, 10, 12);

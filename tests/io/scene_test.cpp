@@ -93,6 +93,21 @@ TEST(Scene, PressureSolverMethodKeys) {
   EXPECT_NE(e.find("simulation.pressure_solver.method: expected \"pcisph\" or \"dfsph\", found \"iisph\""), std::string::npos) << e;
 }
 
+// The scenes take their wall shear from the law of the wall unless asked.
+TEST(Scene, WallShearKeys) {
+  auto doc = demo_document();
+  const Scene defaults = load_scene(write_scene(doc, "defaults.json"));
+  EXPECT_EQ(defaults.simulation.liquid.wall_shear, "spalding1961");
+  EXPECT_EQ(make_simulation_setup(defaults).liquid.wall_shear, dp::WallShear::Spalding1961);
+  doc["simulation"]["liquid"]["wall_shear"] = "no_slip";
+  EXPECT_EQ(make_simulation_setup(load_scene(write_scene(doc, "no_slip.json"))).liquid.wall_shear, dp::WallShear::NoSlip);
+  doc["simulation"]["liquid"]["wall_shear"] = "log_law";
+  const std::string e = error_of(doc, "bad_wall.json");
+  EXPECT_NE(e.find("simulation.liquid.wall_shear: expected \"no_slip\" or \"spalding1961\", found \"log_law\""),
+            std::string::npos)
+      << e;
+}
+
 TEST(Scene, WrongTypeNamesExpectedAndFound) {
   auto doc = demo_document();
   doc["simulation"]["time_step_s"] = "fast";

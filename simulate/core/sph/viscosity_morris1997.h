@@ -17,6 +17,14 @@
 // volume V_b = 1 / sum_k W_bk gives that area as A_b = V_b Int_plane W dA
 // on a flat, evenly sampled wall, which keeps the term right where a wall is
 // sampled finer or coarser than the liquid.
+//
+// Where the first liquid layer lies outside the viscous sublayer, as it does
+// at any practical spacing in a flow of water at speed, a resolved no-slip
+// wall gives the laminar shear rho nu u / y, far below the real one. With
+// WallShear::Spalding1961 the wall-parallel part of the wall term takes the
+// law of the wall's factor (sph/wall_shear_spalding1961.h); the
+// wall-normal part stays laminar.
+#include <cfloat>
 #include <cstdint>
 
 #include "backend/host_device.h"
@@ -24,6 +32,7 @@
 #include "sph/mass_units.h"
 #include "sph/neighbor_list.h"
 #include "sph/uniform_grid.h"
+#include "sph/wall_shear_spalding1961.h"
 
 namespace dp {
 
@@ -57,6 +66,7 @@ struct AddViscosityMorris1997 {
   float wall_layer_volume_factor;   // wall_layer_volume_per_akinci_volume
   Vec3* acceleration;               // m/s^2, added to
   ListedPairs liquid_pairs{}, rigid_pairs{};
+  WallShear wall_shear = WallShear::NoSlip;
 
   DP_HD Vec3 between_liquid(std::size_t i) const {
     const Vec3 xi = liquid.position[i], vi = velocity[i];
@@ -78,11 +88,33 @@ struct AddViscosityMorris1997 {
     const Vec3 xi = liquid.position[i], vi = velocity[i];
     const float eta2 = morris_eta2(kernel);
     float sum = 0.0f;
+    Vec3 into_wall{}, from_nearest{};
+    float nearest2 = FLT_MAX;
     for_each_pair_gradient(rigid, rigid_pairs, i, xi, kernel, [&](std::uint32_t b, Vec3 xib, Vec3 gradW) {
       const float volume = wall_layer_volume_factor * rigid_volume[b];
-      sum += 2.0f * kinematic_viscosity * volume * dot(xib, gradW) / (length_squared(xib) + eta2);
+      const float r2 = length_squared(xib);
+      sum += 2.0f * kinematic_viscosity * volume * dot(xib, gradW) / (r2 + eta2);
+      into_wall += rigid_volume[b] * gradW;
+      if (r2 < nearest2) {
+        nearest2 = r2;
+        from_nearest = xib;
+      }
     });
-    return sum * vi;
+    if (wall_shear == WallShear::NoSlip || sum == 0.0f) return sum * vi;
+    return sum * with_wall_law(vi, into_wall, from_nearest);
+  }
+
+  // v with its wall-parallel part scaled by Spalding's factor. The wall's
+  // normal is the boundary's kernel gradient, as in Akinci's boundary
+  // density; the wall distance is the nearest boundary particle's along it
+  // (exact on a flat, evenly sampled wall).
+  DP_HD Vec3 with_wall_law(Vec3 v, Vec3 into_wall, Vec3 from_nearest) const {
+    const float norm = length(into_wall);
+    if (norm == 0.0f) return v;
+    const Vec3 n = into_wall * (-1.0f / norm);  // out of the wall
+    const Vec3 normal_part = dot(v, n) * n, parallel = v - normal_part;
+    const float distance = fmaxf(dot(from_nearest, n), 0.0f);
+    return normal_part + wall_shear_factor_spalding1961(length(parallel), distance, kinematic_viscosity) * parallel;
   }
 
   DP_HD void operator()(std::size_t i) const {
