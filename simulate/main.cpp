@@ -215,6 +215,7 @@ int run(const Options& opt) {
                    {"inflow_gain_kg", w.inflow_gain_kg}, {"open_in_kg", w.open_in_kg},
                    {"open_out_kg", w.open_out_kg},     {"liquid_to_air_kg", w.liquid_to_air_kg},
                    {"texels_to_air_kg", w.texels_to_air_kg}, {"texels_to_liquid_kg", w.texels_to_liquid_kg},
+                   {"liquid_out_kg", w.liquid_out_kg},
                    {"drift_kg", w.drift_kg()},
                    {"relative_drift", w.relative_drift()}};
     if (opt.paraview) {
@@ -258,6 +259,10 @@ int run(const Options& opt) {
     timings.add(dp::io::table1_row(report, simulation->step_count(), simulation->time()));
     if (dp::io::logs(opt.level, dp::io::LogLevel::Debug))
       std::cerr << "dewpoint-simulate: step " << simulation->step_count() << ": " << progress_detail() << "\n";
+    if (report.particles_left_domain > 0 && dp::io::logs(opt.level, dp::io::LogLevel::Info))
+      std::cerr << "dewpoint-simulate: step " << simulation->step_count() << ": " << report.particles_left_domain
+                << " liquid particle(s) left the domain and were removed (" << simulation->water_ledger().liquid_out_kg * 1e3
+                << " g so far, in the ledger's liquid_out_kg)\n";
     if (progress.due(frames_done)) progress.update(frames_done, progress_detail());
   };
 

@@ -76,8 +76,15 @@ struct TimeStepSettings {
   float force_number = 0.25f;   // dt <= force * sqrt(spacing / max acceleration)
 };
 
+// What a liquid particle that leaves the domain's box does to the run.
+enum class DomainLeaving {
+  Stop,    // an instability: the run stops, naming the particle
+  Remove,  // it leaves the shot, and its mass enters the water ledger's liquid_out
+};
+
 struct SimulationSetup {
-  Vec3 domain_min, domain_max;  // m; a particle leaving it is an instability
+  Vec3 domain_min, domain_max;  // m; see `leaving`
+  DomainLeaving leaving = DomainLeaving::Stop;
   Vec3 gravity{0, -9.81f, 0};   // m/s^2
   float particle_spacing = 0.01f;  // m, rest spacing of liquid particles
   float max_speed = 50.0f;         // m/s; faster is an instability
@@ -116,6 +123,7 @@ struct StepReport {
   double seconds_grid = 0;      // the air phase (Alg. 1 lines 7-11), wall clock
   double seconds_evaporation = 0;  // Alg. 1 lines 15-16 ("Eva" of the paper's Table 1), wall clock
   AirStepReport air;            // projection iterations and residual, sub-steps
+  int particles_left_domain = 0;  // removed at the start of this step (DomainLeaving::Remove)
 };
 
 // The state of the liquid particles, in the core's current order; `id` is

@@ -28,18 +28,50 @@
 
 namespace dp {
 
-// True where a particle's state is not finite, outside the domain, or too fast.
+DP_HD inline bool inside_box(Vec3 x, Vec3 lo, Vec3 hi) {
+  return x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z;
+}
+
+// True where a particle's state is not finite, outside the domain (unless
+// leaving it is allowed), or too fast.
 struct IsUnstable {
   const Vec3* position;
   const Vec3* velocity;
   Vec3 lo, hi;
   float max_speed2;
+  bool may_leave;
   DP_HD bool operator()(std::size_t i) const {
     Vec3 x = position[i], v = velocity[i];
     bool finite = isfinite(x.x) && isfinite(x.y) && isfinite(x.z) && isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
     if (!finite) return true;
-    bool inside = x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z;
-    return !inside || length_squared(v) > max_speed2;
+    return (!may_leave && !inside_box(x, lo, hi)) || length_squared(v) > max_speed2;
+  }
+};
+
+// Particles past the domain's box give up their units (they leave the
+// shot; the units are counted first, exactly, for the ledger).
+struct UnitsOutsideBox {
+  const Vec3* position;
+  const MassUnits* units;
+  Vec3 lo, hi;
+  DP_HD double operator()(std::size_t i) const { return inside_box(position[i], lo, hi) ? 0.0 : static_cast<double>(units[i]); }
+};
+struct IsOutsideBox {
+  const Vec3* position;
+  Vec3 lo, hi;
+  DP_HD bool operator()(std::size_t i) const { return !inside_box(position[i], lo, hi); }
+};
+struct CountOutsideBox {
+  const Vec3* position;
+  Vec3 lo, hi;
+  DP_HD double operator()(std::size_t i) const { return inside_box(position[i], lo, hi) ? 0.0 : 1.0; }
+};
+struct EmptyOutsideBox {
+  const Vec3* position;
+  Vec3 lo, hi;
+  MassUnits* units;
+  DP_HD void operator()(std::size_t i) const {
+    if (!inside_box(position[i], lo, hi)) units[i] = 0;
   }
 };
 
@@ -187,6 +219,8 @@ class SimulationImpl final : public Simulation {
     s.last_max_acceleration = last_max_acceleration_;
     s.converged_step_limit = converged_limit_.limit;
     s.emitted_particles = emitted_particles_;
+    s.left_domain_particles = left_domain_particles_;
+    s.left_domain_units = left_domain_units_;
     split_units(coupling_.liquid_to_air_units(), s.liquid_to_air_lo, s.liquid_to_air_hi);
     split_units(coupling_.texels_to_air_units(), s.texels_to_air_lo, s.texels_to_air_hi);
     s.initial_water = initial_water_;
@@ -238,6 +272,8 @@ class SimulationImpl final : public Simulation {
     last_max_acceleration_ = s.last_max_acceleration;
     converged_limit_.limit = s.converged_step_limit;
     emitted_particles_ = s.emitted_particles;
+    left_domain_particles_ = s.left_domain_particles;
+    left_domain_units_ = s.left_domain_units;
     coupling_.restore_units(join_units(s.liquid_to_air_lo, s.liquid_to_air_hi), join_units(s.texels_to_air_lo, s.texels_to_air_hi));
     initial_water_ = s.initial_water;
     report_ = StepReport{};
@@ -261,6 +297,7 @@ class SimulationImpl final : public Simulation {
       l.texels_to_air_kg = static_cast<double>(coupling_.texels_to_air_units()) * k;
     }
     l.texels_to_liquid_kg = static_cast<double>(emitted_particles_) * particle_mass_;
+    l.liquid_out_kg = static_cast<double>(left_domain_units_) * (static_cast<double>(particle_mass_) / kFullParticleUnits);
     if (steps_ == 0 && l.initial_kg == 0) l.initial_kg = l.total_kg();
     return l;
   }
@@ -403,6 +440,7 @@ class SimulationImpl final : public Simulation {
     // A warm solve reads each particle's pressure from the last step, which
     // merging and removal leave to other particles.
     bool warm = setup_.pressure.warm_start && !dfsph();  // DFSPH solves from zero (sph/dfsph_bender2017.h)
+    if (running && remove_leaving_particles(report)) warm = false;
     if (running && adapt_masses()) warm = false;
     auto t0 = Clock::now();
     sort_liquid();  // Alg. 1 line 3
@@ -752,11 +790,34 @@ class SimulationImpl final : public Simulation {
     return true;
   }
 
+  // DomainLeaving::Remove: the particles the last step carried past the
+  // domain's box leave the shot, their units into the ledger (computed once,
+  // taken from the liquid and given to liquid_out). The step's own frame
+  // showed them where they went; the air saw them on its boundary cells.
+  bool remove_leaving_particles(StepReport& report) {
+    if (setup_.leaving != DomainLeaving::Remove) return false;
+    const std::size_t n = liquid_.size();
+    const Vec3 lo = setup_.domain_min, hi = setup_.domain_max;
+    if (exec_.find_first(n, IsOutsideBox{Exec::ptr(liquid_.position), lo, hi}) == n) return false;
+    const double units = exec_.sum(n, UnitsOutsideBox{Exec::ptr(liquid_.position), Exec::ptr(liquid_.units), lo, hi});
+    const double leaving = exec_.sum(n, CountOutsideBox{Exec::ptr(liquid_.position), lo, hi});
+    exec_.parallel_for(n, EmptyOutsideBox{Exec::ptr(liquid_.position), lo, hi, Exec::ptr(liquid_.units)});
+    // Also drops any particle that evaporated completely, as adaptivity would.
+    adaptivity_.remove_empty(exec_, liquid_);
+    resize_scratch(liquid_.size());
+    left_domain_units_ += static_cast<std::uint64_t>(units);
+    left_domain_particles_ += static_cast<std::uint64_t>(leaving);
+    report.particles_left_domain = static_cast<int>(leaving);
+    return true;
+  }
+
   void check_stability(Phase phase) {
     const std::size_t n = liquid_.position.size();
     float vmax = setup_.max_speed;
+    // While settling there is no ledger to take leaving particles: they stop the run.
+    const bool may_leave = setup_.leaving == DomainLeaving::Remove && phase == Phase::Running;
     std::size_t bad = exec_.find_first(n, IsUnstable{Exec::ptr(liquid_.position), Exec::ptr(liquid_.velocity), setup_.domain_min,
-                                                     setup_.domain_max, vmax * vmax});
+                                                     setup_.domain_max, vmax * vmax, may_leave});
     if (bad == n) return;
     Vec3 x = Exec::download(liquid_.position)[bad], v = Exec::download(liquid_.velocity)[bad];
     std::uint32_t id = Exec::download(liquid_.id)[bad];
@@ -835,6 +896,7 @@ class SimulationImpl final : public Simulation {
   Buffer<float> seed_temperature_;
   std::uint32_t next_id_ = 0;           // for emitted particles
   std::uint64_t emitted_particles_ = 0;
+  std::uint64_t left_domain_particles_ = 0, left_domain_units_ = 0;  // DomainLeaving::Remove
 };
 
 }  // namespace dp

@@ -50,6 +50,7 @@ struct SimulationState {
   float last_max_acceleration = 0;    // m/s^2, bounds the next CFL step
   float converged_step_limit = 1e30f; // s, sph/time_step.h: ConvergedStepLimit
   std::uint64_t emitted_particles = 0;
+  std::uint64_t left_domain_particles = 0, left_domain_units = 0;  // DomainLeaving::Remove, exact
   // Exact unit totals of the coupling (128-bit, as two halves).
   std::uint64_t liquid_to_air_lo = 0, texels_to_air_lo = 0;
   std::int64_t liquid_to_air_hi = 0, texels_to_air_hi = 0;

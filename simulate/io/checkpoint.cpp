@@ -107,13 +107,13 @@ class ByteReader {
 
 void put_ledger(ByteWriter& w, const WaterLedger& l) {
   for (double v : {l.liquid_kg, l.texel_kg, l.vapor_kg, l.initial_kg, l.inflow_gain_kg, l.open_in_kg, l.open_out_kg, l.liquid_to_air_kg,
-                   l.texels_to_air_kg, l.texels_to_liquid_kg})
+                   l.texels_to_air_kg, l.texels_to_liquid_kg, l.liquid_out_kg})
     w.put(v);
 }
 WaterLedger get_ledger(ByteReader& r) {
   WaterLedger l;
   for (double* v : {&l.liquid_kg, &l.texel_kg, &l.vapor_kg, &l.initial_kg, &l.inflow_gain_kg, &l.open_in_kg, &l.open_out_kg,
-                    &l.liquid_to_air_kg, &l.texels_to_air_kg, &l.texels_to_liquid_kg})
+                    &l.liquid_to_air_kg, &l.texels_to_air_kg, &l.texels_to_liquid_kg, &l.liquid_out_kg})
     *v = r.get<double>();
   return l;
 }
@@ -125,6 +125,8 @@ void put_state(ByteWriter& w, const SimulationState& s) {
   w.put(s.last_max_acceleration);
   w.put(s.converged_step_limit);
   w.put(s.emitted_particles);
+  w.put(s.left_domain_particles);
+  w.put(s.left_domain_units);
   w.put(s.liquid_to_air_lo);
   w.put(s.liquid_to_air_hi);
   w.put(s.texels_to_air_lo);
@@ -168,6 +170,8 @@ SimulationState get_state(ByteReader& r) {
   s.last_max_acceleration = r.get<float>();
   s.converged_step_limit = r.get<float>();
   s.emitted_particles = r.get<std::uint64_t>();
+  s.left_domain_particles = r.get<std::uint64_t>();
+  s.left_domain_units = r.get<std::uint64_t>();
   s.liquid_to_air_lo = r.get<std::uint64_t>();
   s.liquid_to_air_hi = r.get<std::int64_t>();
   s.texels_to_air_lo = r.get<std::uint64_t>();

@@ -14,7 +14,7 @@
 
 namespace dp::io {
 
-inline constexpr std::uint32_t kCheckpointVersion = 2;
+inline constexpr std::uint32_t kCheckpointVersion = 3;
 
 struct Checkpoint {
   int frame = 0;                 // the last frame boundary the state has reached

@@ -261,6 +261,9 @@ SimulationSettings read_simulation(JsonObject o, const std::filesystem::path& sc
   s.domain_max_m = domain.vec3("max_m");
   for (int a = 0; a < 3; ++a)
     if (!(s.domain_min_m[a] < s.domain_max_m[a])) throw domain.error("max_m", "every component must exceed min_m's");
+  s.domain_leaving = domain.string("leaving", s.domain_leaving);
+  if (s.domain_leaving != "stop" && s.domain_leaving != "remove")
+    throw domain.error("leaving", "expected \"stop\" or \"remove\", found \"" + s.domain_leaving + "\"");
   domain.finish();
 
   s.gravity_m_s2 = o.vec3("gravity_m_s2", s.gravity_m_s2);

@@ -132,6 +132,7 @@ struct AirSectionSettings {
 
 struct SimulationSettings {
   Vec3d domain_min_m, domain_max_m;
+  std::string domain_leaving = "stop";  // or "remove": a particle past the box leaves the shot
   Vec3d gravity_m_s2{0, -9.81, 0};
   double particle_spacing_m = 0.01;
   double time_step_s = 2e-3;  // the step (fixed) or its upper bound (cfl)

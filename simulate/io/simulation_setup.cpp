@@ -142,6 +142,7 @@ SimulationSetup make_simulation_setup(const Scene& scene, std::vector<RigidAtlas
   SimulationSetup setup;
   setup.domain_min = to_vec3(s.domain_min_m);
   setup.domain_max = to_vec3(s.domain_max_m);
+  setup.leaving = s.domain_leaving == "remove" ? DomainLeaving::Remove : DomainLeaving::Stop;
   setup.gravity = to_vec3(s.gravity_m_s2);
   setup.particle_spacing = static_cast<float>(s.particle_spacing_m);
   setup.time_step.mode = s.cfl_time_step ? TimeStepMode::Cfl : TimeStepMode::Fixed;

@@ -70,6 +70,16 @@ TEST_F(CudaAgreement, WallLawSimulationMatchesCpuAfter20Steps) {
   expect_backends_agree_after_20_steps(setup);
 }
 
+// A particle thrown out of the domain leaves the shot on both backends alike
+// (simulation.domain.leaving: remove).
+TEST_F(CudaAgreement, RemovalOfALeavingParticleMatchesCpuAfter20Steps) {
+  SimulationSetup setup = test::block_over_plate(12, 10, 12);
+  setup.liquid_position[0] = Vec3{0.1999f, 0.2f, 0.0f};
+  setup.liquid_velocity[0] = Vec3{4.0f, 0, 0};
+  setup.leaving = DomainLeaving::Remove;
+  expect_backends_agree_after_20_steps(setup);
+}
+
 // Divergence-free SPH (Bender & Koschier 2017): both solves on both backends.
 TEST_F(CudaAgreement, DfsphSimulationMatchesCpuAfter20Steps) {
   SimulationSetup setup = test::block_over_plate(12, 10, 12);

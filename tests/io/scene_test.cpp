@@ -108,6 +108,17 @@ TEST(Scene, WallShearKeys) {
       << e;
 }
 
+// Leaving the domain stops the run unless the scene lets particles go.
+TEST(Scene, DomainLeavingKey) {
+  auto doc = demo_document();
+  EXPECT_EQ(make_simulation_setup(load_scene(write_scene(doc, "defaults.json"))).leaving, dp::DomainLeaving::Stop);
+  doc["simulation"]["domain"]["leaving"] = "remove";
+  EXPECT_EQ(make_simulation_setup(load_scene(write_scene(doc, "remove.json"))).leaving, dp::DomainLeaving::Remove);
+  doc["simulation"]["domain"]["leaving"] = "delete";
+  const std::string e = error_of(doc, "bad_leaving.json");
+  EXPECT_NE(e.find("simulation.domain.leaving: expected \"stop\" or \"remove\", found \"delete\""), std::string::npos) << e;
+}
+
 TEST(Scene, WrongTypeNamesExpectedAndFound) {
   auto doc = demo_document();
   doc["simulation"]["time_step_s"] = "fast";

@@ -19,9 +19,10 @@ struct WaterLedger {
   double open_in_kg = 0, open_out_kg = 0;  // vapor through open domain faces
   double liquid_to_air_kg = 0, texels_to_air_kg = 0;  // exchanged so far (exact units, shown in kg)
   double texels_to_liquid_kg = 0;                      // emitted particles (Sec. 6.2)
+  double liquid_out_kg = 0;  // liquid particles that left the domain (DomainLeaving::Remove)
 
   double total_kg() const { return liquid_kg + texel_kg + vapor_kg; }
-  double expected_kg() const { return initial_kg + inflow_gain_kg + open_in_kg - open_out_kg; }
+  double expected_kg() const { return initial_kg + inflow_gain_kg + open_in_kg - open_out_kg - liquid_out_kg; }
   double drift_kg() const { return total_kg() - expected_kg(); }
   double relative_drift() const { return expected_kg() != 0 ? drift_kg() / expected_kg() : drift_kg(); }
 };
