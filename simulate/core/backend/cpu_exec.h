@@ -224,9 +224,13 @@ class CpuExec {
   // Loops over fewer elements than this run on the calling thread: waking
   // the other threads for one pass costs tens of microseconds (a futex
   // round trip, more under a hypervisor), more than a pass over a coarse
-  // multigrid level or a short list takes. Each element is computed alone
-  // either way, so results do not change.
-  static constexpr std::size_t kSerialBelow = std::size_t{1} << 15;
+  // multigrid level (8^3 = 512 cells) or a short list takes. 2048 cells of
+  // the cheapest grid pass cost about that much, while 2048 particles of an
+  // SPH pass over ~50 neighbours each cost milliseconds: at 32K the glass
+  // preview's 8300 particles ran every particle pass on one thread
+  // (docs/benchmarks.md, "Particle passes on both cores"). Each element is
+  // computed alone either way, so results do not change.
+  static constexpr std::size_t kSerialBelow = std::size_t{1} << 11;
 
   // Calls f(i) for every i in [0, n).
   template <class F>
