@@ -56,11 +56,6 @@ struct UnitsOutsideBox {
   Vec3 lo, hi;
   DP_HD double operator()(std::size_t i) const { return inside_box(position[i], lo, hi) ? 0.0 : static_cast<double>(units[i]); }
 };
-struct IsOutsideBox {
-  const Vec3* position;
-  Vec3 lo, hi;
-  DP_HD bool operator()(std::size_t i) const { return !inside_box(position[i], lo, hi); }
-};
 struct CountOutsideBox {
   const Vec3* position;
   Vec3 lo, hi;
@@ -798,9 +793,9 @@ class SimulationImpl final : public Simulation {
     if (setup_.leaving != DomainLeaving::Remove) return false;
     const std::size_t n = liquid_.size();
     const Vec3 lo = setup_.domain_min, hi = setup_.domain_max;
-    if (exec_.find_first(n, IsOutsideBox{Exec::ptr(liquid_.position), lo, hi}) == n) return false;
-    const double units = exec_.sum(n, UnitsOutsideBox{Exec::ptr(liquid_.position), Exec::ptr(liquid_.units), lo, hi});
     const double leaving = exec_.sum(n, CountOutsideBox{Exec::ptr(liquid_.position), lo, hi});
+    if (leaving == 0) return false;
+    const double units = exec_.sum(n, UnitsOutsideBox{Exec::ptr(liquid_.position), Exec::ptr(liquid_.units), lo, hi});
     exec_.parallel_for(n, EmptyOutsideBox{Exec::ptr(liquid_.position), lo, hi, Exec::ptr(liquid_.units)});
     // Also drops any particle that evaporated completely, as adaptivity would.
     adaptivity_.remove_empty(exec_, liquid_);

@@ -87,20 +87,22 @@ struct AddViscosityMorris1997 {
   DP_HD Vec3 against_walls(std::size_t i) const {
     const Vec3 xi = liquid.position[i], vi = velocity[i];
     const float eta2 = morris_eta2(kernel);
+    const bool wall_law = wall_shear == WallShear::Spalding1961;
     float sum = 0.0f;
-    Vec3 into_wall{}, from_nearest{};
+    Vec3 into_wall{}, from_nearest{};  // read by the wall law only
     float nearest2 = FLT_MAX;
     for_each_pair_gradient(rigid, rigid_pairs, i, xi, kernel, [&](std::uint32_t b, Vec3 xib, Vec3 gradW) {
       const float volume = wall_layer_volume_factor * rigid_volume[b];
       const float r2 = length_squared(xib);
       sum += 2.0f * kinematic_viscosity * volume * dot(xib, gradW) / (r2 + eta2);
+      if (!wall_law) return;
       into_wall += rigid_volume[b] * gradW;
       if (r2 < nearest2) {
         nearest2 = r2;
         from_nearest = xib;
       }
     });
-    if (wall_shear == WallShear::NoSlip || sum == 0.0f) return sum * vi;
+    if (!wall_law || sum == 0.0f) return sum * vi;
     return sum * with_wall_law(vi, into_wall, from_nearest);
   }
 

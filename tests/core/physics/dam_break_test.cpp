@@ -29,10 +29,11 @@ enum class Walls {
 };
 
 // The surge front Z at each of Martin & Moyce's sample times, in the flume
-// of Martin & Moyce with the given pressure solver, n particles across the
-// column's width and `depth` layers between the side walls.
-std::vector<double> surge_front(PressureSolverMethod method, Walls walls, int n = 16, int depth = 6) {
+// of Martin & Moyce with the given pressure solver.
+std::vector<double> surge_front(PressureSolverMethod method, Walls walls) {
   const double a = 2.25 * 0.0254;  // m
+  const int n = 16;                // particles across the column's width
+  const int depth = 6;             // layers between the side walls
   const float s = static_cast<float>(a / n);
   const float gap = 1.2f * s;  // liquid to wall, see hydrostatic_test.cpp
   SimulationSetup setup;
