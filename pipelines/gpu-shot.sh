@@ -84,8 +84,8 @@ fi
 # 3. Shots: scene, preset, simulated seconds (--duration; - keeps the
 # scene's), frames (- for all), seconds of budget. The drop's dfsph preset is
 # the scene at full resolution with the second pressure solver (the glass has
-# none: DFSPH does not hold its 66 layers at 1 mm at rest, docs/benchmarks.md). table1 is the paper's
-# resolution with a few steps' duration, which --duration makes a whole
+# none: DFSPH does not hold its 66 layers at 1 mm at rest, docs/benchmarks.md).
+# table1 is the paper's resolution with a few steps' duration, which --duration makes a whole
 # second; the glass's final resolution is the scene as written. A shot that
 # runs out of budget is stopped; the frames it finished stay listed in its
 # manifest.
