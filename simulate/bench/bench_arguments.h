@@ -20,6 +20,9 @@ class BenchArguments {
   BenchArguments& add(const std::string& flag, const std::string& meta, long* target) {
     return add_setter(flag, meta, [target](const char* v) { *target = std::atol(v); });
   }
+  BenchArguments& add(const std::string& flag, const std::string& meta, double* target) {
+    return add_setter(flag, meta, [target](const char* v) { *target = std::atof(v); });
+  }
   BenchArguments& add(const std::string& flag, const std::string& meta, std::string* target) {
     return add_setter(flag, meta, [target](const char* v) { *target = v; });
   }

@@ -1,12 +1,16 @@
 // dewpoint-bench-dam-break: time per step of the liquid simulation on a dam
 // break of a chosen size, split as the step reports it (neighbour search,
-// pressure solve, heat, the rest), with PCISPH iterations. Depends only on
+// pressure solve, heat, the rest), with the pressure solver's iterations, for
+// PCISPH or DFSPH; the timed window starts after a number of steps or at a
+// simulated time, to compare early and late in the collapse. Depends only on
 // the simulator core, so it also runs on a bare CUDA machine.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstdint>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -19,6 +23,9 @@ struct Options {
   long particles = 100000;
   int steps = 20;
   int warmup = 5;
+  double warmup_until = 0;  // s of simulated time, after the warm-up steps
+  std::string method = "pcisph";
+  int warm_start = 0;
   std::string device = "cpu";
   int threads = 0;
 };
@@ -29,6 +36,9 @@ Options parse(int argc, char** argv) {
       .add("--particles", "N", &o.particles)
       .add("--steps", "N", &o.steps)
       .add("--warmup", "N", &o.warmup)
+      .add("--warmup-until", "SECONDS", &o.warmup_until)
+      .add("--method", "pcisph|dfsph", &o.method)
+      .add("--warm-start", "0|1", &o.warm_start)
       .add("--device", "cpu|cuda", &o.device)
       .add("--threads", "N", &o.threads)
       .parse(argc, argv);
@@ -81,11 +91,22 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
   Options o = parse(argc, argv);
   dp::SimulationSetup setup = dam_break(o.particles);
+  if (o.method != "pcisph" && o.method != "dfsph") {
+    std::fprintf(stderr, "dewpoint-bench-dam-break: --method: expected pcisph or dfsph, found '%s'\n", o.method.c_str());
+    return 2;
+  }
+  setup.pressure.method = o.method == "dfsph" ? dp::PressureSolverMethod::Dfsph : dp::PressureSolverMethod::Pcisph;
+  setup.pressure.warm_start = o.warm_start != 0;
   try {
     dp::ExecutionConfig exec{dp::parse_device(o.device), dp::resolve_thread_count(o.threads)};
     auto sim = dp::make_simulation(exec, setup);
+    const auto warmup_start = std::chrono::steady_clock::now();
     for (int i = 0; i < o.warmup; ++i) sim->step();
-    std::vector<double> total, neighbours, pressure, heat, other, iterations;
+    while (sim->time() < o.warmup_until) sim->step();
+    const double warmup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - warmup_start).count();
+    const double window_start = sim->time();
+    const std::int64_t first_timed_step = sim->step_count() + 1;
+    std::vector<double> total, neighbours, pressure, heat, other, iterations, divergence_iterations, density_error;
     for (int i = 0; i < o.steps; ++i) {
       auto t = std::chrono::steady_clock::now();
       dp::StepReport r = sim->step();
@@ -95,12 +116,23 @@ int main(int argc, char** argv) {
       heat.push_back(r.seconds_heat * 1e3);
       other.push_back(r.seconds_other * 1e3);
       iterations.push_back(r.pressure_iterations);
+      divergence_iterations.push_back(r.divergence_iterations);
+      density_error.push_back(r.density_error);
     }
-    std::printf("dam break: %zu liquid + %zu rigid particles, spacing %.4g m, device %s, %d threads, %d steps after %d warm-up\n",
-                setup.liquid_position.size(), setup.rigid_position.size(), setup.particle_spacing, o.device.c_str(),
-                exec.threads, o.steps, o.warmup);
-    std::printf("median ms/step: total %.2f | neighbours %.2f | pressure %.2f (PCISPH iterations %.0f) | heat %.2f | other %.2f\n",
-                median(total), median(neighbours), median(pressure), median(iterations), median(heat), median(other));
+    const double window = sim->time() - window_start;
+    std::printf("dam break: %zu liquid + %zu rigid particles, spacing %.4g m, %s%s, device %s, %d threads\n",
+                setup.liquid_position.size(), setup.rigid_position.size(), setup.particle_spacing, o.method.c_str(),
+                setup.pressure.warm_start ? " warm-started" : "", o.device.c_str(), exec.threads);
+    std::printf("warm-up: steps 1-%lld, t = 0-%.4f s, %.1f s wall\n", static_cast<long long>(first_timed_step - 1),
+                window_start, warmup_seconds);
+    std::printf("timed steps %lld-%lld, t = %.4f-%.4f s, mean dt %.3g ms\n", static_cast<long long>(first_timed_step),
+                static_cast<long long>(sim->step_count()), window_start, sim->time(), window / o.steps * 1e3);
+    std::printf("median ms/step: total %.2f | neighbours %.2f | pressure %.2f (iterations %.0f, divergence %.0f) | heat %.2f | other %.2f\n",
+                median(total), median(neighbours), median(pressure), median(iterations), median(divergence_iterations),
+                median(heat), median(other));
+    std::printf("median density error after the solve: %.3g %%\n", median(density_error) * 100);
+    std::printf("wall s per simulated s over the window: %.1f\n",
+                std::accumulate(total.begin(), total.end(), 0.0) * 1e-3 / window);
     std::printf("median ns per liquid particle-step: %.1f\n", median(total) * 1e6 / static_cast<double>(setup.liquid_position.size()));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "dewpoint-bench-dam-break: %s\n", e.what());
