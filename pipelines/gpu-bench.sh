@@ -9,6 +9,9 @@ run() { echo "### $*"; "$@" 2>&1; echo "### exit $?"; }
 nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv,noheader || true
 run $B/dewpoint-bench-dam-break --device cuda --particles 100000 --steps 20 --warmup 5
 run $B/dewpoint-bench-dam-break --device cuda --particles 1000000 --steps 10 --warmup 3
+# Both solvers late in the collapse (docs/benchmarks.md, "Both solvers against SPlisHSPlasH").
+run $B/dewpoint-bench-dam-break --device cuda --particles 100000 --steps 20 --warmup-until 0.38
+run $B/dewpoint-bench-dam-break --device cuda --particles 100000 --steps 20 --warmup-until 0.38 --method dfsph
 # Glass scale (issue #3): 177K liquid + 80K rigid particles, paper Table 1 Glass 174K + 89K; target <= 5 ms per step.
 run $B/dewpoint-bench-dam-break --device cuda --particles 182000 --steps 20 --warmup 5
 run $B/dewpoint-bench-air --device cuda --resolution 64 --steps 20 --warmup 5
