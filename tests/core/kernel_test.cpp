@@ -32,6 +32,7 @@ TEST(CubicSplineKernel, GradientIsTheDerivativeOfW) {
   }
   EXPECT_EQ(k.W(1.0f), 0.0f);
   EXPECT_EQ(length(k.gradW(Vec3{1.0f, 0, 0})), 0.0f);
+  EXPECT_EQ(k.gradient_factor(Vec3{}), 0.0f);  // coincident particles: no direction, no force (not 0/0)
 }
 
 }  // namespace

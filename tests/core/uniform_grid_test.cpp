@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "backend/cpu_exec.h"
+#include "sph/kernel_cubic_spline.h"
+#include "sph/neighbor_list.h"
 #include "sph/particle_grid.h"
 
 namespace dp {
@@ -127,6 +129,46 @@ TEST(UniformGrid, RebuiltGridsRangesMatchEachNewSetOfKeys) {
             << "cell " << c << " after set " << s << ", " << threads << " threads";
     }
   }
+}
+
+// The CPU fills a range of lists at once (FillNeighbors::whole_range),
+// without a branch per candidate; the GPU fills one list per thread
+// (operator()). Both must give every particle the points within the radius,
+// ascending as the grid stores them, with the same gradient factors bit for
+// bit, also for lists longer than whole_range keeps locally (the blobs'
+// cores hold several hundred points within one cell size).
+TEST(NeighbourLists, RangeFillIsTheScanOfEveryPointAndTheOneAtATimeFill) {
+  std::mt19937 rng(17);
+  std::normal_distribution<float> blob(0.0f, 0.03f);
+  std::uniform_real_distribution<float> inside(0.05f, 0.95f);
+  std::vector<Vec3> points;
+  for (int n = 0; n < 4000; ++n) points.push_back(Vec3{0.3f + blob(rng), 0.4f + blob(rng), 0.5f + blob(rng)});
+  for (int n = 0; n < 2000; ++n) points.push_back(Vec3{inside(rng), inside(rng), inside(rng)});
+  const Built b = build(2, points, kGrid);
+  const GridView view = b.grid.view(b.sorted);
+  const CubicSplineKernel kernel = CubicSplineKernel::with_support(kGrid.cell_size);
+  CpuExec exec(2);
+  NeighborListBuffers<CpuExec> lists;
+  const ListedPairs pairs = lists.build_with_gradients(exec, b.sorted, view, kernel);
+
+  const float r2 = kernel.h * kernel.h;
+  std::vector<std::uint32_t> one_at_a_time(lists.index.size());
+  std::vector<float> factor_one_at_a_time(lists.index.size());
+  const FillNeighbors fill{b.sorted.data(), view, r2, lists.offset.data(), one_at_a_time.data(), kernel, factor_one_at_a_time.data()};
+  std::size_t long_lists = 0;
+  for (std::size_t i = 0; i < b.sorted.size(); ++i) {
+    fill(i);
+    std::vector<std::uint32_t> scan;
+    for (std::uint32_t j = 0; j < b.sorted.size(); ++j)
+      if (length_squared(b.sorted[i] - b.sorted[j]) < r2) scan.push_back(j);
+    const std::vector<std::uint32_t> listed(lists.index.begin() + pairs.list.offset[i], lists.index.begin() + pairs.list.offset[i + 1]);
+    ASSERT_EQ(listed, scan) << "particle " << i;
+    long_lists += listed.size() > 192 ? 1 : 0;
+  }
+  EXPECT_GT(long_lists, 100u);  // the fallback to operator() ran
+  EXPECT_EQ(lists.index, one_at_a_time);
+  for (std::size_t k = 0; k < factor_one_at_a_time.size(); ++k)
+    ASSERT_EQ(lists.gradient_factor[k], factor_one_at_a_time[k]) << "pair " << k;
 }
 
 TEST(UniformGrid, NoParticlesGiveEveryCellAnEmptyRange) {

@@ -2,6 +2,7 @@
 // Cubic B-spline kernel (Monaghan 1992) written with its support radius h:
 // W(r) = 0 for r >= h. Normalised in 3D: sigma = 8 / (pi h^3).
 #include "backend/host_device.h"
+#include "math/keep_if.h"
 #include "math/vec3.h"
 
 namespace dp {
@@ -25,18 +26,22 @@ struct CubicSplineKernel {
   // gradW(d) = gradient_factor(d) * d: the scalar part of the gradient, 0
   // outside the support and at d = 0. Neighbour lists fixed for a step keep
   // it per pair (ComputeGradientFactors) for the passes that repeat.
-  DP_HD float gradient_factor(Vec3 d) const {
-    float r = length(d);
-    float q = r / h;
-    if (q >= 1.0f || r <= 1e-9f * h) return 0.0f;
-    float dWdq;
-    if (q <= 0.5f)
-      dWdq = sigma * (18.0f * q * q - 12.0f * q);
-    else {
-      float t = 1.0f - q;
-      dWdq = -6.0f * sigma * t * t;
-    }
-    return dWdq / (h * r);
+  DP_HD float gradient_factor(Vec3 d) const { return gradient_factor_at(length(d)); }
+
+  // The same at distance r. Both pieces are computed and one selected on
+  // their bits (keep_if.h): a new list's pairs fall on either side of
+  // q = 1/2 at random, and the branch g++ makes of a plain `?:` was
+  // mispredicted on every particle (FillNeighbors::whole_range). W keeps
+  // its branches: the density sums of a liquid at rest take the outer piece
+  // for nearly every pair, and computing both cost a settled glass's
+  // pressure solve 9 % (docs/benchmarks.md).
+  DP_HD float gradient_factor_at(float r) const {
+    const float q = r / h;
+    const float t = 1.0f - q;
+    const float inner = sigma * (18.0f * q * q - 12.0f * q);
+    const float outer = -6.0f * sigma * t * t;
+    const float factor = pick_if(q <= 0.5f, inner, outer) / (h * r);
+    return keep_if(factor, (q < 1.0f) & (r > 1e-9f * h));
   }
 
   // Gradient with respect to x_i of W(|x_i - x_j|), for d = x_i - x_j.

@@ -50,6 +50,14 @@ struct GridView {
   // contiguous runs (one per row of three cells along x).
   template <class F>
   DP_HD void for_each_near(Vec3 p, const F& f) const {
+    for_each_run_near(p, [&](std::uint32_t first, std::uint32_t end) {
+      for (std::uint32_t n = first; n < end; ++n) f(n);
+    });
+  }
+
+  // The same particles as runs: f(first, end) for each of the nine rows.
+  template <class F>
+  DP_HD void for_each_run_near(Vec3 p, const F& f) const {
     int ci, cj, ck;
     grid.cell_of(p, ci, cj, ck);
     const int i0 = ci > 0 ? ci - 1 : 0;
@@ -58,8 +66,7 @@ struct GridView {
       if (k < 0 || k >= grid.nz) continue;
       for (int j = cj - 1; j <= cj + 1; ++j) {
         if (j < 0 || j >= grid.ny) continue;
-        const std::uint32_t end = cell_end[grid.linear(i1, j, k)];
-        for (std::uint32_t n = cell_begin[grid.linear(i0, j, k)]; n < end; ++n) f(n);
+        f(cell_begin[grid.linear(i0, j, k)], cell_end[grid.linear(i1, j, k)]);
       }
     }
   }
