@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "backend/cpu_exec.h"
+#include "sph/density.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/neighbor_list.h"
 #include "sph/particle_grid.h"
@@ -169,6 +170,48 @@ TEST(NeighbourLists, RangeFillIsTheScanOfEveryPointAndTheOneAtATimeFill) {
   EXPECT_EQ(lists.index, one_at_a_time);
   for (std::size_t k = 0; k < factor_one_at_a_time.size(); ++k)
     ASSERT_EQ(lists.gradient_factor[k], factor_one_at_a_time[k]) << "pair " << k;
+}
+
+// The CPU's densities over the lists (ListedDensity::split_sum: terms
+// first, then their sum) against the one-loop sum the GPU runs, bit for
+// bit: at the lists' own positions, and at moved positions (as PCISPH's
+// predicted ones) where some listed pairs have left the support and must
+// add nothing, with adaptive masses and boundary particles, and for lists
+// longer than split_sum keeps locally.
+TEST(NeighbourLists, SplitDensitySumIsTheOneLoopSumBitForBit) {
+  std::mt19937 rng(23);
+  std::normal_distribution<float> blob(0.0f, 0.03f);
+  std::uniform_real_distribution<float> inside(0.05f, 0.95f), jitter(-0.004f, 0.004f);
+  std::uniform_int_distribution<std::uint32_t> units(1, kFullParticleUnits);
+  std::vector<Vec3> points, boundary;
+  for (int n = 0; n < 4000; ++n) points.push_back(Vec3{0.3f + blob(rng), 0.4f + blob(rng), 0.5f + blob(rng)});
+  for (int n = 0; n < 3000; ++n) points.push_back(Vec3{inside(rng), inside(rng), inside(rng)});
+  for (int n = 0; n < 3000; ++n) boundary.push_back(Vec3{inside(rng), 0.35f + 0.01f * inside(rng), inside(rng)});
+  const Built liquid = build(2, points, kGrid), rigid = build(2, boundary, kGrid);
+  const CubicSplineKernel kernel = CubicSplineKernel::with_support(kGrid.cell_size);
+  CpuExec exec(2);
+  NeighborListBuffers<CpuExec> liquid_lists, rigid_lists;
+  const NeighborList ll = liquid_lists.build(exec, liquid.sorted, liquid.grid.view(liquid.sorted), kernel.h);
+  const NeighborList lr = rigid_lists.build(exec, liquid.sorted, rigid.grid.view(rigid.sorted), kernel.h);
+  std::vector<MassUnits> mass_units(points.size());
+  for (MassUnits& u : mass_units) u = units(rng);
+  std::vector<float> volume(boundary.size());
+  for (float& v : volume) v = 1e-6f * (0.5f + inside(rng));
+  std::vector<Vec3> moved(liquid.sorted);
+  for (Vec3& x : moved) x = x + Vec3{jitter(rng), jitter(rng), jitter(rng)};
+  std::size_t long_lists = 0, left_support = 0;
+  for (const std::vector<Vec3>* at : std::initializer_list<const std::vector<Vec3>*>{&liquid.sorted, &moved}) {
+    const ListedDensity density{ll, lr, at->data(), rigid.sorted.data(), mass_units.data(), volume.data(), kernel, 0.008f, 1000.0f};
+    for (std::size_t i = 0; i < at->size(); ++i) {
+      const float one_loop = density(i), split = density.split_sum(i);
+      ASSERT_EQ(bits_of(split), bits_of(one_loop)) << "particle " << i;
+      long_lists += ll.offset[i + 1] - ll.offset[i] > ListedDensity::kMaxTerms ? 1 : 0;
+      for (std::uint32_t k = ll.offset[i]; k < ll.offset[i + 1]; ++k)
+        left_support += length_squared((*at)[i] - (*at)[ll.index[k]]) >= kernel.h * kernel.h ? 1 : 0;
+    }
+  }
+  EXPECT_GT(long_lists, 100u);    // the fallback ran
+  EXPECT_GT(left_support, 1000u);  // zeroed terms were summed
 }
 
 TEST(UniformGrid, NoParticlesGiveEveryCellAnEmptyRange) {

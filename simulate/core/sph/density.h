@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "backend/host_device.h"
+#include "math/keep_if.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
 #include "sph/neighbor_list.h"
@@ -68,12 +69,49 @@ struct ListedDensity {
     });
     return particle_mass * liquid_part + rest_density * rigid_part;
   }
+
+  // The same value on the CPU, from a list's terms computed first in a
+  // loop without branches (it vectorises: the kernel's pieces are selected,
+  // the support test keeps or zeroes a term) and then summed in the list's
+  // order. Adding a zeroed term changes no sum of non-negative terms, so the
+  // bits are operator()'s. The one loop of operator() kept its sum on the
+  // stack and mispredicted the kernel's branch; PCISPH runs this every
+  // iteration. Lists longer than kMaxTerms take operator().
+  static constexpr std::uint32_t kMaxTerms = 256;
+  DP_HOST_INLINE float split_sum(std::size_t i) const {
+    const std::uint32_t l0 = liquid_neighbors.offset[i], ln = liquid_neighbors.offset[i + 1] - l0;
+    const std::uint32_t r0 = rigid_neighbors.offset[i], rn = rigid_neighbors.offset[i + 1] - r0;
+    if (ln > kMaxTerms || rn > kMaxTerms) return (*this)(i);
+    const Vec3 xi = position[i];
+    const float h2 = kernel.h * kernel.h;
+    float term[kMaxTerms];
+    const std::uint32_t* liquid = liquid_neighbors.index + l0;
+    for (std::uint32_t k = 0; k < ln; ++k) {
+      const std::uint32_t j = liquid[k];
+      const float r2 = length_squared(xi - position[j]);
+      term[k] = keep_if(weight_of(units[j]) * kernel.W_selected(sqrtf(r2)), r2 < h2);
+    }
+    float liquid_part = 0.0f;
+    for (std::uint32_t k = 0; k < ln; ++k) liquid_part += term[k];
+    const std::uint32_t* rigid = rigid_neighbors.index + r0;
+    for (std::uint32_t k = 0; k < rn; ++k) {
+      const std::uint32_t b = rigid[k];
+      const float r2 = length_squared(xi - rigid_position[b]);
+      term[k] = keep_if(rigid_volume[b] * kernel.W_selected(sqrtf(r2)), r2 < h2);
+    }
+    float rigid_part = 0.0f;
+    for (std::uint32_t k = 0; k < rn; ++k) rigid_part += term[k];
+    return particle_mass * liquid_part + rest_density * rigid_part;
+  }
 };
 
 struct ComputeDensity {
   ListedDensity density_of;
   float* density;
   DP_HD void operator()(std::size_t i) const { density[i] = density_of(i); }
+  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
+    for (std::size_t i = begin; i < end; ++i) density[i] = density_of.split_sum(i);
+  }
 };
 
 }  // namespace dp

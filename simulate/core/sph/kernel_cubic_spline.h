@@ -18,8 +18,20 @@ struct CubicSplineKernel {
   DP_HD float W(float r) const {
     float q = r / h;
     if (q >= 1.0f) return 0.0f;
-    if (q <= 0.5f) return sigma * (6.0f * q * q * q - 6.0f * q * q + 1.0f);
-    float t = 1.0f - q;
+    if (q <= 0.5f) return W_inner(q);
+    return W_outer(q);
+  }
+
+  // W with both pieces computed and one selected on their bits: the same
+  // value, for loops that vectorise (ListedDensity::sum_of_listed).
+  DP_HD float W_selected(float r) const {
+    const float q = r / h;
+    return keep_if(pick_if(q <= 0.5f, W_inner(q), W_outer(q)), q < 1.0f);
+  }
+
+  DP_HD float W_inner(float q) const { return sigma * (6.0f * q * q * q - 6.0f * q * q + 1.0f); }  // q <= 1/2
+  DP_HD float W_outer(float q) const {  // 1/2 < q < 1
+    const float t = 1.0f - q;
     return sigma * 2.0f * t * t * t;
   }
 

@@ -72,9 +72,13 @@ struct CorrectPressure {
   float delta;
   float* pressure;
   float* density_error;  // (rho* - rho0)/rho0, >= 0
-  DP_HD void operator()(std::size_t i) const {
+  DP_HD void operator()(std::size_t i) const { correct(i, predicted_density(i)); }
+  // The CPU's: the same densities by ListedDensity::split_sum.
+  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
+    for (std::size_t i = begin; i < end; ++i) correct(i, predicted_density.split_sum(i));
+  }
+  DP_HD void correct(std::size_t i, float rho) const {
     const float rho0 = predicted_density.rest_density;
-    float rho = predicted_density(i);
     float error = rho > rho0 ? rho - rho0 : 0.0f;
     pressure[i] += delta * error;
     density_error[i] = error / rho0;
