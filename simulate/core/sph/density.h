@@ -74,9 +74,10 @@ struct ListedDensity {
   // loop without branches (it vectorises: the kernel's pieces are selected,
   // the support test keeps or zeroes a term) and then summed in the list's
   // order. Adding a zeroed term changes no sum of non-negative terms, so the
-  // bits are operator()'s. The one loop of operator() kept its sum on the
-  // stack and mispredicted the kernel's branch; PCISPH runs this every
-  // iteration. Lists longer than kMaxTerms take operator().
+  // bits are operator()'s. operator()'s one loop took a square root and a
+  // division at a time and kept its sum on the stack (a store and a load on
+  // every pair's dependency chain); PCISPH runs this every iteration.
+  // Lists longer than kMaxTerms take operator().
   static constexpr std::uint32_t kMaxTerms = 256;
   DP_HOST_INLINE float split_sum(std::size_t i) const {
     const std::uint32_t l0 = liquid_neighbors.offset[i], ln = liquid_neighbors.offset[i + 1] - l0;

@@ -23,7 +23,7 @@ struct CubicSplineKernel {
   }
 
   // W with both pieces computed and one selected on their bits: the same
-  // value, for loops that vectorise (ListedDensity::sum_of_listed).
+  // value, for loops that vectorise (ListedDensity::split_sum).
   DP_HD float W_selected(float r) const {
     const float q = r / h;
     return keep_if(pick_if(q <= 0.5f, W_inner(q), W_outer(q)), q < 1.0f);
@@ -44,9 +44,10 @@ struct CubicSplineKernel {
   // their bits (keep_if.h): a new list's pairs fall on either side of
   // q = 1/2 at random, and the branch g++ makes of a plain `?:` was
   // mispredicted on every particle (FillNeighbors::whole_range). W keeps
-  // its branches: the density sums of a liquid at rest take the outer piece
-  // for nearly every pair, and computing both cost a settled glass's
-  // pressure solve 9 % (docs/benchmarks.md).
+  // its branches for loops that take one pair at a time: in a liquid at
+  // rest nearly every pair takes the outer piece, so there the branch is
+  // predicted, and computing both pieces cost a settled glass's pressure
+  // solve 9 % (docs/benchmarks.md).
   DP_HD float gradient_factor_at(float r) const {
     const float q = r / h;
     const float t = 1.0f - q;
