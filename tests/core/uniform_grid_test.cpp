@@ -1,7 +1,9 @@
 // The neighbour grid's cell ranges (Green 2009), against the standard
 // library's equal_range over the sorted keys and against a scan of every
 // particle; on one thread, on two, and through the per-cell search the CUDA
-// backend runs.
+// backend runs. Then what the CPU computes from the grid in its own way:
+// the neighbour lists (against a scan of every point) and the density sums
+// over them, each against the one-particle-at-a-time code the GPU runs.
 #include <gtest/gtest.h>
 
 #include <algorithm>

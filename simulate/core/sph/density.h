@@ -80,29 +80,31 @@ struct ListedDensity {
   // Lists longer than kMaxTerms take operator().
   static constexpr std::uint32_t kMaxTerms = 256;
   DP_HOST_INLINE float split_sum(std::size_t i) const {
-    const std::uint32_t l0 = liquid_neighbors.offset[i], ln = liquid_neighbors.offset[i + 1] - l0;
-    const std::uint32_t r0 = rigid_neighbors.offset[i], rn = rigid_neighbors.offset[i + 1] - r0;
-    if (ln > kMaxTerms || rn > kMaxTerms) return (*this)(i);
+    if (liquid_neighbors.offset[i + 1] - liquid_neighbors.offset[i] > kMaxTerms ||
+        rigid_neighbors.offset[i + 1] - rigid_neighbors.offset[i] > kMaxTerms)
+      return (*this)(i);
     const Vec3 xi = position[i];
+    const float liquid_part = sum_of_terms(liquid_neighbors, i, xi, position, [&](std::uint32_t j) { return weight_of(units[j]); });
+    const float rigid_part = sum_of_terms(rigid_neighbors, i, xi, rigid_position, [&](std::uint32_t b) { return rigid_volume[b]; });
+    return particle_mass * liquid_part + rest_density * rigid_part;
+  }
+
+ private:
+  // sum over i's list of factor(j) W(|x_i - x_j|) within the support, as
+  // split_sum describes (at most kMaxTerms pairs).
+  template <class Factor>
+  DP_HOST_INLINE float sum_of_terms(const NeighborList& list, std::size_t i, Vec3 xi, const Vec3* at, const Factor& factor) const {
+    const std::uint32_t first = list.offset[i], count = list.offset[i + 1] - first;
     const float h2 = kernel.h * kernel.h;
     float term[kMaxTerms];
-    const std::uint32_t* liquid = liquid_neighbors.index + l0;
-    for (std::uint32_t k = 0; k < ln; ++k) {
-      const std::uint32_t j = liquid[k];
-      const float r2 = length_squared(xi - position[j]);
-      term[k] = keep_if(weight_of(units[j]) * kernel.W_selected(sqrtf(r2)), r2 < h2);
+    for (std::uint32_t k = 0; k < count; ++k) {
+      const std::uint32_t j = list.index[first + k];
+      const float r2 = length_squared(xi - at[j]);
+      term[k] = keep_if(factor(j) * kernel.W_selected(sqrtf(r2)), r2 < h2);
     }
-    float liquid_part = 0.0f;
-    for (std::uint32_t k = 0; k < ln; ++k) liquid_part += term[k];
-    const std::uint32_t* rigid = rigid_neighbors.index + r0;
-    for (std::uint32_t k = 0; k < rn; ++k) {
-      const std::uint32_t b = rigid[k];
-      const float r2 = length_squared(xi - rigid_position[b]);
-      term[k] = keep_if(rigid_volume[b] * kernel.W_selected(sqrtf(r2)), r2 < h2);
-    }
-    float rigid_part = 0.0f;
-    for (std::uint32_t k = 0; k < rn; ++k) rigid_part += term[k];
-    return particle_mass * liquid_part + rest_density * rigid_part;
+    float sum = 0.0f;
+    for (std::uint32_t k = 0; k < count; ++k) sum += term[k];
+    return sum;
   }
 };
 

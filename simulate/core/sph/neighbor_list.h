@@ -71,7 +71,8 @@ struct FillNeighbors {
   // taken in one loop (it vectorises, as CountNeighbors' does), then each
   // candidate is written to a local list and kept by advancing its end by
   // its test's 0 or 1; distances and gradient factors follow in loops of
-  // their own over the kept pairs. Same pairs, same order, same bits as
+  // their own over the kept pairs (in one loop with the positions' gathers,
+  // g++ leaves the factors' roots and divisions scalar). Same pairs, same order, same bits as
   // operator(); a list longer than kMaxListed (never in a liquid at rest
   // density) takes operator().
   DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
