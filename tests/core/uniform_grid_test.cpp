@@ -2,8 +2,9 @@
 // library's equal_range over the sorted keys and against a scan of every
 // particle; on one thread, on two, and through the per-cell search the CUDA
 // backend runs. Then what the CPU computes from the grid in its own way:
-// the neighbour lists (against a scan of every point) and the density sums
-// over them, each against the one-particle-at-a-time code the GPU runs.
+// the neighbour lists (against a scan of every point) and the pair sums
+// over them (density, XSPH, Akinci's surface tension and adhesion, Morris's
+// viscosity), each against the one-particle-at-a-time code the GPU runs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +17,9 @@
 #include "sph/kernel_cubic_spline.h"
 #include "sph/neighbor_list.h"
 #include "sph/particle_grid.h"
+#include "sph/surface_tension_akinci2013.h"
+#include "sph/viscosity_morris1997.h"
+#include "sph/viscosity_xsph.h"
 
 namespace dp {
 namespace {
@@ -214,6 +218,103 @@ TEST(NeighbourLists, SplitDensitySumIsTheOneLoopSumBitForBit) {
   }
   EXPECT_GT(long_lists, 100u);    // the fallback ran
   EXPECT_GT(left_support, 1000u);  // zeroed terms were summed
+}
+
+// What the particle step's pair sums read: a liquid cloud (a dense blob
+// with lists longer than the split sums keep locally, a scatter, and one
+// particle doubled, so one pair is coincident) above a sheet of boundary
+// particles, the step's lists with their gradient factors, and random
+// masses, densities, velocities, normals, volumes and adhesions.
+struct PairSumScene {
+  Built liquid, rigid;
+  CubicSplineKernel kernel = CubicSplineKernel::with_support(kGrid.cell_size);
+  NeighborListBuffers<CpuExec> liquid_lists, rigid_lists;
+  ListedPairs liquid_pairs, rigid_pairs;
+  std::vector<MassUnits> units;
+  std::vector<float> density, volume, adhesion;
+  std::vector<Vec3> velocity, normal, moved;
+
+  explicit PairSumScene(unsigned seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<float> blob(0.0f, 0.03f);
+    std::uniform_real_distribution<float> inside(0.05f, 0.95f), unit(0.0f, 1.0f), jitter(-0.004f, 0.004f);
+    std::vector<Vec3> points, boundary;
+    for (int n = 0; n < 4000; ++n) points.push_back(Vec3{0.3f + blob(rng), 0.4f + blob(rng), 0.5f + blob(rng)});
+    for (int n = 0; n < 3000; ++n) points.push_back(Vec3{inside(rng), inside(rng), inside(rng)});
+    points.push_back(points[4500]);
+    for (int n = 0; n < 3000; ++n) boundary.push_back(Vec3{inside(rng), 0.35f + 0.01f * inside(rng), inside(rng)});
+    liquid = build(2, points, kGrid);
+    rigid = build(2, boundary, kGrid);
+    CpuExec exec(2);
+    liquid_pairs = liquid_lists.build_with_gradients(exec, liquid.sorted, liquid.grid.view(liquid.sorted), kernel);
+    rigid_pairs = rigid_lists.build_with_gradients(exec, liquid.sorted, rigid.grid.view(rigid.sorted), kernel);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      units.push_back(1 + static_cast<MassUnits>(unit(rng) * (kFullParticleUnits - 1)));
+      density.push_back(900.0f + 200.0f * unit(rng));
+      velocity.push_back(Vec3{unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f});
+      normal.push_back(Vec3{unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f});
+      moved.push_back(liquid.sorted[i] + Vec3{jitter(rng), jitter(rng), jitter(rng)});
+    }
+    for (std::size_t b = 0; b < boundary.size(); ++b) {
+      volume.push_back(1e-6f * (0.5f + unit(rng)));
+      adhesion.push_back(5.0f + 10.0f * unit(rng));
+    }
+  }
+  std::size_t size() const { return liquid.sorted.size(); }
+  std::size_t long_lists() const {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < size(); ++i)
+      count += liquid_pairs.list.offset[i + 1] - liquid_pairs.list.offset[i] > kMaxTermsInOrder ? 1 : 0;
+    return count;
+  }
+};
+
+// Runs f's whole_range over every particle and f's operator() on each, into
+// `out` as f writes it (from `start` where f adds to it), and compares bits.
+template <class MakeFunctor>
+void expect_whole_range_is_one_loop(const std::vector<Vec3>& start, const MakeFunctor& make) {
+  std::vector<Vec3> split(start), one_loop(start);
+  make(split.data()).whole_range(0, split.size());
+  const auto f = make(one_loop.data());
+  for (std::size_t i = 0; i < one_loop.size(); ++i) f(i);
+  for (std::size_t i = 0; i < split.size(); ++i) {
+    ASSERT_EQ(bits_of(split[i].x), bits_of(one_loop[i].x)) << "particle " << i;
+    ASSERT_EQ(bits_of(split[i].y), bits_of(one_loop[i].y)) << "particle " << i;
+    ASSERT_EQ(bits_of(split[i].z), bits_of(one_loop[i].z)) << "particle " << i;
+  }
+}
+
+// XSPH reads the moved positions over the step's lists, so pairs that left
+// the support must add nothing, as in the density test above.
+TEST(NeighbourLists, SplitXsphIsTheOneLoopSumBitForBit) {
+  const PairSumScene s(29);
+  ASSERT_GT(s.long_lists(), 100u);
+  expect_whole_range_is_one_loop(std::vector<Vec3>(s.size()), [&](Vec3* smoothed) {
+    return ApplyXsph{s.liquid_pairs.list, s.rigid_pairs.list, s.moved.data(), s.rigid.sorted.data(), s.units.data(), s.density.data(),
+                     s.volume.data(), s.velocity.data(), s.kernel, 0.008f, 0.01f, 0.1f, smoothed};
+  });
+}
+
+TEST(NeighbourLists, SplitSurfaceTensionAndAdhesionAreTheOneLoopSumsBitForBit) {
+  const PairSumScene s(31);
+  const SurfaceTensionParameters p{s.kernel, 0.008f, 1000.0f, 2.0f};
+  expect_whole_range_is_one_loop(std::vector<Vec3>(s.size()), [&](Vec3* acceleration) {
+    return ComputeSurfaceTensionAcceleration{s.liquid.grid.view(s.liquid.sorted), s.rigid.grid.view(s.rigid.sorted), s.units.data(),
+                                             s.density.data(), s.normal.data(), s.volume.data(), s.adhesion.data(), p, acceleration,
+                                             s.liquid_pairs, s.rigid_pairs};
+  });
+}
+
+// Morris adds to the acceleration it is given; both wall shears.
+TEST(NeighbourLists, SplitMorrisViscosityIsTheOneLoopSumBitForBit) {
+  const PairSumScene s(37);
+  for (WallShear shear : {WallShear::NoSlip, WallShear::Spalding1961}) {
+    expect_whole_range_is_one_loop(s.normal, [&](Vec3* acceleration) {
+      return AddViscosityMorris1997{s.liquid.grid.view(s.liquid.sorted), s.rigid.grid.view(s.rigid.sorted), s.units.data(),
+                                    s.density.data(), s.volume.data(), s.velocity.data(), s.kernel, 0.008f, 1e-6f, 0.9f,
+                                    acceleration, s.liquid_pairs, s.rigid_pairs, shear};
+    });
+  }
 }
 
 TEST(UniformGrid, NoParticlesGiveEveryCellAnEmptyRange) {

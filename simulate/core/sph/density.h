@@ -9,6 +9,7 @@
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
 #include "sph/neighbor_list.h"
+#include "sph/sum_in_list_order.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
@@ -70,15 +71,13 @@ struct ListedDensity {
     return particle_mass * liquid_part + rest_density * rigid_part;
   }
 
-  // The same value on the CPU, from a list's terms computed first in a
-  // loop without branches (it vectorises: the kernel's pieces are selected,
-  // the support test keeps or zeroes a term) and then summed in the list's
-  // order. Adding a zeroed term changes no sum of non-negative terms, so the
-  // bits are operator()'s. operator()'s one loop took a square root and a
-  // division at a time and kept its sum on the stack (a store and a load on
-  // every pair's dependency chain); PCISPH runs this every iteration.
-  // Lists longer than kMaxTerms take operator().
-  static constexpr std::uint32_t kMaxTerms = 256;
+  // The same value on the CPU, by sum_in_list_order.h: the kernel's pieces
+  // are selected and the support test keeps or zeroes a term. operator()'s
+  // one loop took a square root and a division at a time and kept its sum
+  // on the stack (a store and a load on every pair's dependency chain);
+  // PCISPH runs this every iteration. Lists longer than kMaxTerms take
+  // operator().
+  static constexpr std::uint32_t kMaxTerms = kMaxTermsInOrder;
   DP_HOST_INLINE float split_sum(std::size_t i) const {
     if (liquid_neighbors.offset[i + 1] - liquid_neighbors.offset[i] > kMaxTerms ||
         rigid_neighbors.offset[i + 1] - rigid_neighbors.offset[i] > kMaxTerms)
@@ -90,21 +89,16 @@ struct ListedDensity {
   }
 
  private:
-  // sum over i's list of factor(j) W(|x_i - x_j|) within the support, as
-  // split_sum describes (at most kMaxTerms pairs).
+  // sum over i's list of factor(j) W(|x_i - x_j|) within the support.
   template <class Factor>
   DP_HOST_INLINE float sum_of_terms(const NeighborList& list, std::size_t i, Vec3 xi, const Vec3* at, const Factor& factor) const {
-    const std::uint32_t first = list.offset[i], count = list.offset[i + 1] - first;
+    const std::uint32_t first = list.offset[i];
     const float h2 = kernel.h * kernel.h;
-    float term[kMaxTerms];
-    for (std::uint32_t k = 0; k < count; ++k) {
+    return sum_in_list_order(0.0f, list.offset[i + 1] - first, [&](std::uint32_t k) {
       const std::uint32_t j = list.index[first + k];
       const float r2 = length_squared(xi - at[j]);
-      term[k] = keep_if(factor(j) * kernel.W_selected(sqrtf(r2)), r2 < h2);
-    }
-    float sum = 0.0f;
-    for (std::uint32_t k = 0; k < count; ++k) sum += term[k];
-    return sum;
+      return keep_if(factor(j) * kernel.W_selected(sqrtf(r2)), r2 < h2);
+    });
   }
 };
 

@@ -25,10 +25,12 @@
 #include <cstdint>
 
 #include "backend/host_device.h"
+#include "math/keep_if.h"
 #include "math/vec3.h"
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
 #include "sph/neighbor_list.h"
+#include "sph/sum_in_list_order.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
@@ -57,6 +59,16 @@ struct AkinciCohesionKernel {
     float h3 = h * h * h;
     return scale * (2.0f * pair_term - h3 * h3 * (1.0f / 64.0f));
   }
+
+  // C with both pieces computed and one selected on their bits: the same
+  // value, for loops that vectorise (sum_in_list_order.h).
+  DP_HD float C_selected(float r) const {
+    const float outer = (h - r) * r;
+    const float pair_term = outer * outer * outer;
+    const float h3 = h * h * h;
+    const float c = pick_if(2.0f * r > h, scale * pair_term, scale * (2.0f * pair_term - h3 * h3 * (1.0f / 64.0f)));
+    return keep_if(c, (r > 0.0f) & (r <= h));
+  }
 };
 
 // Akinci 2013, Eq. 7:
@@ -77,6 +89,12 @@ struct AkinciAdhesionKernel {
     // Rounding can leave the radicand a hair below zero at the range's ends.
     if (radicand <= 0.0f) return 0.0f;
     return scale * sqrtf(sqrtf(radicand));
+  }
+
+  // A without branches, as AkinciCohesionKernel::C_selected.
+  DP_HD float A_selected(float r) const {
+    const float radicand = -4.0f * r * r / h + 6.0f * r - 2.0f * h;
+    return keep_if(scale * sqrtf(sqrtf(radicand)), (2.0f * r > h) & (r <= h) & (radicand > 0.0f));
   }
 };
 
@@ -151,14 +169,13 @@ struct ComputeSurfaceTensionAcceleration {
     for_each_pair(liquid, liquid_pairs, i, xi, p.kernel.h, [&](std::uint32_t j, Vec3 xij, std::uint32_t) {
       const float r2 = length_squared(xij);
       if (j == i) return;
-      float mj = p.particle_mass * weight_of(units[j]);
-      Vec3 pair = -curvature_mass_ratio(mi, mj) * (ni - normal[j]);
+      Vec3 pair = curvature_term(mi, ni, j);
       // Coincident particles have no direction to attract along.
       if (r2 > 0.0f) {
         float r = sqrtf(r2);
-        pair -= (mj * cohesion.C(r) / r) * xij;
+        pair -= cohesion_term(j, cohesion.C(r), r, xij);
       }
-      a += (p.tension * surface_deficiency_factor(p.rest_density, rhoi, density[j])) * pair;
+      a += pair_weight(rhoi, j) * pair;
     });
     return a;
   }
@@ -170,13 +187,63 @@ struct ComputeSurfaceTensionAcceleration {
       const float r2 = length_squared(xib);
       if (r2 <= 0.0f) return;
       float r = sqrtf(r2);
-      float psi = p.rest_density * rigid_volume[b];
-      a -= (rigid_adhesion[b] * psi * adhesion.A(r) / r) * xib;
+      a -= adhesion_term(b, adhesion.A(r), r, xib);
     });
     return a;
   }
 
   DP_HD void operator()(std::size_t i) const { acceleration[i] = cohesion_and_curvature(i) + adhesion_to_boundary(i); }
+
+  // The CPU's, over the step's lists: the same sums by sum_in_list_order.h.
+  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
+    const AkinciCohesionKernel cohesion = AkinciCohesionKernel::with_support(p.kernel.h);
+    const AkinciAdhesionKernel adhesion = AkinciAdhesionKernel::with_support(p.kernel.h);
+    const NeighborList& liquid_list = liquid_pairs.list;
+    const NeighborList& rigid_list = rigid_pairs.list;
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::uint32_t liquid_count = liquid_pairs.present() ? liquid_list.offset[i + 1] - liquid_list.offset[i] : 0;
+      const std::uint32_t rigid_count = rigid_pairs.present() ? rigid_list.offset[i + 1] - rigid_list.offset[i] : 0;
+      if (!liquid_pairs.present() || !rigid_pairs.present() || liquid_count > kMaxTermsInOrder || rigid_count > kMaxTermsInOrder) {
+        (*this)(i);
+        continue;
+      }
+      const Vec3 xi = liquid.position[i], ni = normal[i];
+      const float mi = p.particle_mass * weight_of(units[i]), rhoi = density[i];
+      const std::uint32_t* near = liquid_list.index + liquid_list.offset[i];
+      const Vec3 tension = vector_sum_in_list_order(Vec3{}, liquid_count, [&](std::uint32_t k) {
+        const std::uint32_t j = near[k];
+        const Vec3 xij = xi - liquid.position[j];
+        const float r2 = length_squared(xij), r = sqrtf(r2);
+        const Vec3 pair = curvature_term(mi, ni, j) - keep_if(cohesion_term(j, cohesion.C_selected(r), r, xij), r2 > 0.0f);
+        return keep_if(pair_weight(rhoi, j) * pair, j != i);
+      });
+      const std::uint32_t* walls = rigid_list.index + rigid_list.offset[i];
+      const Vec3 adhering = vector_sum_in_list_order(Vec3{}, rigid_count, [&](std::uint32_t k) {
+        const std::uint32_t b = walls[k];
+        const Vec3 xib = xi - rigid.position[b];
+        const float r2 = length_squared(xib), r = sqrtf(r2);
+        return keep_if(-adhesion_term(b, adhesion.A_selected(r), r, xib), r2 > 0.0f);
+      });
+      acceleration[i] = tension + adhering;
+    }
+  }
+
+ private:
+  // Eq. 4's pair force over m_i, with the pair's harmonic-mean mass.
+  DP_HD Vec3 curvature_term(float mi, Vec3 ni, std::uint32_t j) const {
+    return -curvature_mass_ratio(mi, p.particle_mass * weight_of(units[j])) * (ni - normal[j]);
+  }
+  // Eq. 2's pair force over m_i and gamma, C = C(r).
+  DP_HD Vec3 cohesion_term(std::uint32_t j, float c, float r, Vec3 xij) const {
+    return (p.particle_mass * weight_of(units[j]) * c / r) * xij;
+  }
+  // gamma K_ij (Eq. 5).
+  DP_HD float pair_weight(float rhoi, std::uint32_t j) const { return p.tension * surface_deficiency_factor(p.rest_density, rhoi, density[j]); }
+  // Eq. 6's pair force over m_i, A = A(r).
+  DP_HD Vec3 adhesion_term(std::uint32_t b, float a, float r, Vec3 xib) const {
+    const float psi = p.rest_density * rigid_volume[b];
+    return (rigid_adhesion[b] * psi * a / r) * xib;
+  }
 };
 
 }  // namespace dp

@@ -31,6 +31,7 @@
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
 #include "sph/neighbor_list.h"
+#include "sph/sum_in_list_order.h"
 #include "sph/uniform_grid.h"
 #include "sph/wall_shear_spalding1961.h"
 
@@ -74,12 +75,30 @@ struct AddViscosityMorris1997 {
     Vec3 a{};
     for_each_pair_gradient(liquid, liquid_pairs, i, xi, kernel, [&](std::uint32_t j, Vec3 xij, Vec3 gradW) {
       if (j == i) return;
-      const float rhoj = density[j];
-      const float mj = particle_mass * weight_of(units[j]);
-      const float mu_sum_over_rho2 = kinematic_viscosity * (rhoi + rhoj) / (rhoi * rhoj);
-      a += (mj * mu_sum_over_rho2 * dot(xij, gradW) / (length_squared(xij) + eta2)) * (vi - velocity[j]);
+      a += liquid_term(rhoi, vi, j, xij, gradW, eta2);
     });
     return a;
+  }
+
+  // between_liquid over the step's list by sum_in_list_order.h (the CPU's,
+  // for lists up to kMaxTermsInOrder).
+  DP_HOST_INLINE Vec3 between_liquid_listed(std::size_t i) const {
+    const Vec3 xi = liquid.position[i], vi = velocity[i];
+    const float rhoi = density[i], eta2 = morris_eta2(kernel);
+    const std::uint32_t first = liquid_pairs.list.offset[i];
+    return vector_sum_in_list_order(Vec3{}, liquid_pairs.list.offset[i + 1] - first, [&](std::uint32_t k) {
+      const std::uint32_t j = liquid_pairs.list.index[first + k];
+      const Vec3 xij = xi - liquid.position[j];
+      return keep_if(liquid_term(rhoi, vi, j, xij, liquid_pairs.gradient_factor[first + k] * xij, eta2), j != i);
+    });
+  }
+
+  // Morris's Eq. 8 for one pair, mu = rho nu.
+  DP_HD Vec3 liquid_term(float rhoi, Vec3 vi, std::uint32_t j, Vec3 xij, Vec3 gradW, float eta2) const {
+    const float rhoj = density[j];
+    const float mj = particle_mass * weight_of(units[j]);
+    const float mu_sum_over_rho2 = kinematic_viscosity * (rhoi + rhoj) / (rhoi * rhoj);
+    return (mj * mu_sum_over_rho2 * dot(xij, gradW) / (length_squared(xij) + eta2)) * (vi - velocity[j]);
   }
 
   // The wall's particle carries the liquid's density rho_i, so its
@@ -119,8 +138,16 @@ struct AddViscosityMorris1997 {
     return normal_part + wall_shear_factor_spalding1961(length(parallel), distance, kinematic_viscosity) * parallel;
   }
 
-  DP_HD void operator()(std::size_t i) const {
-    Vec3 a = between_liquid(i);
+  DP_HD void operator()(std::size_t i) const { add(i, between_liquid(i)); }
+
+  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
+    for (std::size_t i = begin; i < end; ++i) {
+      const bool listed = liquid_pairs.present() && liquid_pairs.list.offset[i + 1] - liquid_pairs.list.offset[i] <= kMaxTermsInOrder;
+      add(i, listed ? between_liquid_listed(i) : between_liquid(i));
+    }
+  }
+
+  DP_HD void add(std::size_t i, Vec3 a) const {
     if (rigid_volume) a += against_walls(i);
     acceleration[i] += a;
   }

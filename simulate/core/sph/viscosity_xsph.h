@@ -10,6 +10,7 @@
 #include "sph/kernel_cubic_spline.h"
 #include "sph/mass_units.h"
 #include "sph/neighbor_list.h"
+#include "sph/sum_in_list_order.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
@@ -35,16 +36,49 @@ struct ApplyXsph {
     liquid_neighbors.for_each(i, [&](std::uint32_t j) {
       float r2 = length_squared(xi - position[j]);
       if (j == i || r2 >= h2) return;
-      float volume_j = particle_mass * weight_of(units[j]) / density[j];
-      dv += (epsilon * volume_j * kernel.W(sqrtf(r2))) * (velocity[j] - vi);
+      dv += liquid_term(j, kernel.W(sqrtf(r2)), vi);
     });
     rigid_neighbors.for_each(i, [&](std::uint32_t b) {
       float r2 = length_squared(xi - rigid_position[b]);
       if (r2 >= h2) return;
-      dv -= (boundary_epsilon * rigid_volume[b] * kernel.W(sqrtf(r2))) * vi;
+      dv -= rigid_term(b, kernel.W(sqrtf(r2)), vi);
     });
     smoothed[i] = vi + dv;
   }
+
+  // The CPU's: the same sums by sum_in_list_order.h (the positions have
+  // moved since the lists were made, so every pair is tested against the
+  // support again).
+  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
+    const float h2 = kernel.h * kernel.h;
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::uint32_t liquid_first = liquid_neighbors.offset[i], liquid_count = liquid_neighbors.offset[i + 1] - liquid_first;
+      const std::uint32_t rigid_first = rigid_neighbors.offset[i], rigid_count = rigid_neighbors.offset[i + 1] - rigid_first;
+      if (liquid_count > kMaxTermsInOrder || rigid_count > kMaxTermsInOrder) {
+        (*this)(i);
+        continue;
+      }
+      const Vec3 xi = position[i], vi = velocity[i];
+      Vec3 dv = vector_sum_in_list_order(Vec3{}, liquid_count, [&](std::uint32_t k) {
+        const std::uint32_t j = liquid_neighbors.index[liquid_first + k];
+        const float r2 = length_squared(xi - position[j]);
+        return keep_if(liquid_term(j, kernel.W_selected(sqrtf(r2)), vi), (j != i) & (r2 < h2));
+      });
+      dv = vector_sum_in_list_order(dv, rigid_count, [&](std::uint32_t k) {
+        const std::uint32_t b = rigid_neighbors.index[rigid_first + k];
+        const float r2 = length_squared(xi - rigid_position[b]);
+        return keep_if(-rigid_term(b, kernel.W_selected(sqrtf(r2)), vi), r2 < h2);
+      });
+      smoothed[i] = vi + dv;
+    }
+  }
+
+ private:
+  DP_HD Vec3 liquid_term(std::uint32_t j, float w, Vec3 vi) const {
+    const float volume_j = particle_mass * weight_of(units[j]) / density[j];
+    return (epsilon * volume_j * w) * (velocity[j] - vi);
+  }
+  DP_HD Vec3 rigid_term(std::uint32_t b, float w, Vec3 vi) const { return (boundary_epsilon * rigid_volume[b] * w) * vi; }
 };
 
 }  // namespace dp
