@@ -18,10 +18,9 @@
 // 18 % fewer samples (docs/benchmarks.md). Where a loop has little
 // arithmetic per pair (the pressure acceleration over the lists' gradient
 // factors, the surface normals, heat conduction), the stored terms cost as
-// much as they save or more,
-// and those keep their one loop. CPU only, for the whole_range hooks
-// (backend/cpu_exec.h): on the GPU a thread takes one particle and the
-// functor's one loop.
+// much as they save or more, and those keep their one loop. CPU only, for
+// the whole_range hooks (backend/cpu_exec.h): on the GPU a thread takes one
+// particle and the functor's one loop.
 #include <cstdint>
 
 #include "backend/host_device.h"
