@@ -313,7 +313,7 @@ class SimulationImpl final : public Simulation {
   void resize_scratch(std::size_t n) {
     for (auto* b : {&position_tmp_, &velocity_tmp_, &predicted_, &nonpressure_acc_, &pressure_acc_, &normal_, &tension_acc_})
       b->resize(n);
-    for (auto* b : {&temperature_tmp_, &density_, &pressure_, &pressure_start_, &density_error_, &surface_area_, &liquid_rate_,
+    for (auto* b : {&temperature_tmp_, &mass_, &density_, &pressure_, &pressure_start_, &density_error_, &surface_area_, &liquid_rate_,
                     &dfsph_factor_, &stiffness_, &divergence_pressure_})
       b->resize(n);
     id_tmp_.resize(n);
@@ -449,6 +449,7 @@ class SimulationImpl final : public Simulation {
     const std::size_t n = liquid_.position.size();
     const GridView liquid = liquid_grid_.view(liquid_.position);
     const GridView rigid = rigid_grid_.view(rigid_position_);
+    exec_.parallel_for(n, ParticleMass{Exec::ptr(liquid_.units), particle_mass_, Exec::ptr(mass_)});
     exec_.parallel_for(n, ComputeDensity{listed_density(Exec::ptr(liquid_.position)), Exec::ptr(density_)});
     if (dfsph()) {
       exec_.parallel_for(n, ComputeDfsphFactor{listed_particles(), Exec::ptr(dfsph_factor_)});
@@ -665,8 +666,7 @@ class SimulationImpl final : public Simulation {
 
   ListedParticles listed_particles() const {
     return ListedParticles{liquid_pairs_, rigid_pairs_, Exec::ptr(liquid_.position), Exec::ptr(rigid_position_),
-                          Exec::ptr(liquid_.units), Exec::ptr(rigid_volume_), Exec::ptr(density_), particle_mass_,
-                          setup_.liquid.rest_density};
+                          Exec::ptr(mass_), Exec::ptr(rigid_volume_), Exec::ptr(density_), setup_.liquid.rest_density};
   }
 
   // Bender & Koschier 2017, Alg. 2: the velocities made divergence-free
@@ -865,7 +865,7 @@ class SimulationImpl final : public Simulation {
   Buffer<Vec3> position_tmp_, velocity_tmp_, predicted_, nonpressure_acc_, pressure_acc_;
   Buffer<std::uint32_t> id_tmp_;
   Buffer<MassUnits> units_tmp_;
-  Buffer<float> temperature_tmp_, density_, pressure_, pressure_start_, density_error_;
+  Buffer<float> temperature_tmp_, mass_, density_, pressure_, pressure_start_, density_error_;
   Buffer<float> dfsph_factor_, stiffness_, divergence_pressure_;  // DFSPH's alpha_i, kappa_i and its divergence solve's pressure
   Buffer<float> surface_area_, liquid_rate_;
   Buffer<Vec3> rigid_position_;

@@ -17,13 +17,12 @@ struct ListedParticles {
   ListedPairs rigid_pairs;
   const Vec3* position;
   const Vec3* rigid_position;
-  const MassUnits* units;
+  const float* liquid_mass;  // m_j = w_j m of the step (ParticleMass)
   const float* rigid_volume;
   const float* density;  // of the step's start (DFSPH reads it; PCISPH uses rho0)
-  float particle_mass;   // m of a full particle; m_j = w_j m
   float rest_density;
 
-  DP_HD float mass(std::uint32_t j) const { return particle_mass * weight_of(units[j]); }
+  DP_HD float mass(std::uint32_t j) const { return liquid_mass[j]; }
   // gradW_ij and gradW_ib of the k-th pair in i's lists.
   DP_HD Vec3 liquid_gradient(std::size_t i, std::uint32_t k) const {
     return liquid_pairs.gradient_factor[k] * (position[i] - position[liquid_pairs.list.index[k]]);

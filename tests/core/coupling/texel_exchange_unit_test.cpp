@@ -1,9 +1,13 @@
 // Alg. 2's invariants (paper Sec. 6.2) over random masses, rates and caps,
-// the trilinear stencil, the wetting rule and thread-count independence.
+// the trilinear stencil, the wetting rule, thread-count independence and
+// the exact scaling of transfers.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
+#include <vector>
 
+#include "coupling/exact_units.h"
 #include "texel_box.h"
 
 namespace dp {
@@ -81,6 +85,46 @@ test::TexelBox random_box(int threads, unsigned seed) {
   for (double& rho : a.vapor) rho = u(rng) < 0.3 ? 0.0 : 0.03 * u(rng);
   b.air.set_vapor(b.exec, a.vapor);
   return b;
+}
+
+// floor(x num / den) by shift and subtract over the 128-bit product's bits:
+// a reference independent of both the compiler's 128-bit division and the
+// CPU's divq, which scale_units uses on x86-64.
+std::uint64_t floor_of_scaled_by_bits(std::uint64_t x, std::uint64_t num, std::uint64_t den) {
+  __extension__ typedef unsigned __int128 Wide;
+  const Wide product = static_cast<Wide>(x) * num;
+  Wide remainder = 0, quotient = 0;
+  for (int bit = 127; bit >= 0; --bit) {
+    remainder = (remainder << 1) | ((product >> bit) & 1);
+    quotient <<= 1;
+    if (remainder >= den) {
+      remainder -= den;
+      quotient |= 1;
+    }
+  }
+  return static_cast<std::uint64_t>(quotient);
+}
+
+// w_t and w_c scale a transfer to floor(x num / den), num < den; at or
+// above 1 (and for den 0) the transfer stays as it is.
+TEST(coupling_ExactUnits, ScaledUnitsAreTheFloorOfTheExactQuotient) {
+  const std::uint64_t top = static_cast<std::uint64_t>(kMaxTransferUnits);
+  std::mt19937_64 rng(3);
+  std::vector<std::uint64_t> values{0, 1, 2, 3, 255, 256, (1ull << 32) - 1, 1ull << 32, top - 1, top};
+  for (int n = 0; n < 20; ++n) values.push_back(rng() % top);
+  for (int n = 0; n < 20; ++n) values.push_back(rng() % 4096);
+  int checked = 0;
+  for (std::uint64_t x : values)
+    for (std::uint64_t num : values)
+      for (std::uint64_t den : values) {
+        if (den == 0 || num >= den) {
+          ASSERT_EQ(scale_units(x, num, den), x);
+          continue;
+        }
+        ASSERT_EQ(scale_units(x, num, den), floor_of_scaled_by_bits(x, num, den)) << x << " * " << num << " / " << den;
+        ++checked;
+      }
+  EXPECT_GT(checked, 50000);
 }
 
 TEST(coupling_Alg2, RandomStatesKeepEveryBoundAndConserveExactly) {
