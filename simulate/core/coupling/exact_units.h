@@ -28,7 +28,7 @@ DP_HD inline TexelMassUnits transfer_units_of_kg(double kg, double kg_per_unit) 
 // For num < den the quotient is below x and fits 64 bits, so on x86-64 one
 // divq of the 128-bit product by den gives it; g++ calls the general
 // 128-by-128-bit __udivti3 instead, which was 9 % of a 1024^2 texture's
-// scene (SCA Logo Tex). Same quotient either way (the rest is floor).
+// scene (SCA Logo Tex). Both give the floor, so the same units.
 DP_HD inline TexelMassUnits scale_units(TexelMassUnits x, TexelMassUnits num, TexelMassUnits den) {
   if (den == 0 || num >= den) return x;
   __extension__ typedef unsigned __int128 Wide;
