@@ -211,7 +211,7 @@ TEST(NeighbourLists, SplitDensitySumIsTheOneLoopSumBitForBit) {
     for (std::size_t i = 0; i < at->size(); ++i) {
       const float one_loop = density(i), split = density.split_sum(i);
       ASSERT_EQ(bits_of(split), bits_of(one_loop)) << "particle " << i;
-      long_lists += ll.offset[i + 1] - ll.offset[i] > ListedDensity::kMaxTerms ? 1 : 0;
+      long_lists += fits_in_list_order(ll, i) ? 0 : 1;
       for (std::uint32_t k = ll.offset[i]; k < ll.offset[i + 1]; ++k)
         left_support += length_squared((*at)[i] - (*at)[ll.index[k]]) >= kernel.h * kernel.h ? 1 : 0;
     }
@@ -264,7 +264,7 @@ struct PairSumScene {
   std::size_t long_lists() const {
     std::size_t count = 0;
     for (std::size_t i = 0; i < size(); ++i)
-      count += liquid_pairs.list.offset[i + 1] - liquid_pairs.list.offset[i] > kMaxTermsInOrder ? 1 : 0;
+      count += fits_in_list_order(liquid_pairs.list, i) ? 0 : 1;
     return count;
   }
 };

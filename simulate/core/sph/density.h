@@ -75,13 +75,10 @@ struct ListedDensity {
   // are selected and the support test keeps or zeroes a term. operator()'s
   // one loop took a square root and a division at a time and kept its sum
   // on the stack (a store and a load on every pair's dependency chain);
-  // PCISPH runs this every iteration. Lists longer than kMaxTerms take
-  // operator().
-  static constexpr std::uint32_t kMaxTerms = kMaxTermsInOrder;
+  // PCISPH runs this every iteration. Lists longer than kMaxTermsInOrder
+  // take operator().
   DP_HOST_INLINE float split_sum(std::size_t i) const {
-    if (liquid_neighbors.offset[i + 1] - liquid_neighbors.offset[i] > kMaxTerms ||
-        rigid_neighbors.offset[i + 1] - rigid_neighbors.offset[i] > kMaxTerms)
-      return (*this)(i);
+    if (!fits_in_list_order(liquid_neighbors, i) || !fits_in_list_order(rigid_neighbors, i)) return (*this)(i);
     const Vec3 xi = position[i];
     const float liquid_part = sum_of_terms(liquid_neighbors, i, xi, position, [&](std::uint32_t j) { return weight_of(units[j]); });
     const float rigid_part = sum_of_terms(rigid_neighbors, i, xi, rigid_position, [&](std::uint32_t b) { return rigid_volume[b]; });

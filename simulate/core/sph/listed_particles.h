@@ -7,7 +7,6 @@
 #include <cstdint>
 
 #include "backend/host_device.h"
-#include "sph/mass_units.h"
 #include "sph/neighbor_list.h"
 
 namespace dp {

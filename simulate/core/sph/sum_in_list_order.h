@@ -21,6 +21,7 @@
 // much as they save or more, and those keep their one loop. CPU only, for
 // the whole_range hooks (backend/cpu_exec.h): on the GPU a thread takes one
 // particle and the functor's one loop.
+#include <cstddef>
 #include <cstdint>
 
 #include "backend/host_device.h"
@@ -32,6 +33,12 @@ namespace dp {
 // Lists up to this long fit the terms' stack arrays; longer ones (never in
 // a liquid at rest density) take the functor's one loop.
 inline constexpr std::uint32_t kMaxTermsInOrder = 256;
+
+// Whether i's list (a NeighborList) is short enough for the sums below.
+template <class List>
+DP_HD_INLINE bool fits_in_list_order(const List& list, std::size_t i) {
+  return list.offset[i + 1] - list.offset[i] <= kMaxTermsInOrder;
+}
 
 // start + term(0) + ... + term(count - 1), added left to right.
 template <class Term>

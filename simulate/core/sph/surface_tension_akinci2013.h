@@ -201,12 +201,13 @@ struct ComputeSurfaceTensionAcceleration {
     const NeighborList& liquid_list = liquid_pairs.list;
     const NeighborList& rigid_list = rigid_pairs.list;
     for (std::size_t i = begin; i < end; ++i) {
-      const std::uint32_t liquid_count = liquid_pairs.present() ? liquid_list.offset[i + 1] - liquid_list.offset[i] : 0;
-      const std::uint32_t rigid_count = rigid_pairs.present() ? rigid_list.offset[i + 1] - rigid_list.offset[i] : 0;
-      if (!liquid_pairs.present() || !rigid_pairs.present() || liquid_count > kMaxTermsInOrder || rigid_count > kMaxTermsInOrder) {
+      if (!liquid_pairs.present() || !rigid_pairs.present() || !fits_in_list_order(liquid_list, i) ||
+          !fits_in_list_order(rigid_list, i)) {
         (*this)(i);
         continue;
       }
+      const std::uint32_t liquid_count = liquid_list.offset[i + 1] - liquid_list.offset[i];
+      const std::uint32_t rigid_count = rigid_list.offset[i + 1] - rigid_list.offset[i];
       const Vec3 xi = liquid.position[i], ni = normal[i];
       const float mi = p.particle_mass * weight_of(units[i]), rhoi = density[i];
       const std::uint32_t* near = liquid_list.index + liquid_list.offset[i];

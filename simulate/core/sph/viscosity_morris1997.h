@@ -142,7 +142,7 @@ struct AddViscosityMorris1997 {
 
   DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
     for (std::size_t i = begin; i < end; ++i) {
-      const bool listed = liquid_pairs.present() && liquid_pairs.list.offset[i + 1] - liquid_pairs.list.offset[i] <= kMaxTermsInOrder;
+      const bool listed = liquid_pairs.present() && fits_in_list_order(liquid_pairs.list, i);
       add(i, listed ? between_liquid_listed(i) : between_liquid(i));
     }
   }

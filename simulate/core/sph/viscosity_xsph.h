@@ -52,12 +52,12 @@ struct ApplyXsph {
   DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
     const float h2 = kernel.h * kernel.h;
     for (std::size_t i = begin; i < end; ++i) {
-      const std::uint32_t liquid_first = liquid_neighbors.offset[i], liquid_count = liquid_neighbors.offset[i + 1] - liquid_first;
-      const std::uint32_t rigid_first = rigid_neighbors.offset[i], rigid_count = rigid_neighbors.offset[i + 1] - rigid_first;
-      if (liquid_count > kMaxTermsInOrder || rigid_count > kMaxTermsInOrder) {
+      if (!fits_in_list_order(liquid_neighbors, i) || !fits_in_list_order(rigid_neighbors, i)) {
         (*this)(i);
         continue;
       }
+      const std::uint32_t liquid_first = liquid_neighbors.offset[i], liquid_count = liquid_neighbors.offset[i + 1] - liquid_first;
+      const std::uint32_t rigid_first = rigid_neighbors.offset[i], rigid_count = rigid_neighbors.offset[i + 1] - rigid_first;
       const Vec3 xi = position[i], vi = velocity[i];
       Vec3 dv = vector_sum_in_list_order(Vec3{}, liquid_count, [&](std::uint32_t k) {
         const std::uint32_t j = liquid_neighbors.index[liquid_first + k];
