@@ -23,7 +23,7 @@ export OMP_WAIT_POLICY
 TOOL_FLAGS ?= --quiet
 # Table 1's timing runs are benchmarks. flock keeps them from overlapping one another, and each runs with
 # libgomp's default wait policy (spin, then sleep), as a simulation alone on its cores should: PASSIVE costs a
-# 64^3 air step 20-25 ms on 2 cores (docs/benchmarks.md, "OpenMP's wait policy and the scenes' Grid").
+# 64^3 air step 20-25 ms on 2 cores (docs/benchmarks.md, "OpenMP's wait policy is the scenes' Grid gap").
 # Timings taken while make -j runs other tools beside them measure the machine's load, not the simulator.
 TIMING_WAIT_POLICY ?= default
 TIMING_ENV := $(if $(filter default,$(TIMING_WAIT_POLICY)),env -u OMP_WAIT_POLICY,env OMP_WAIT_POLICY=$(TIMING_WAIT_POLICY))
