@@ -313,7 +313,7 @@ class SimulationImpl final : public Simulation {
   void resize_scratch(std::size_t n) {
     for (auto* b : {&position_tmp_, &velocity_tmp_, &predicted_, &nonpressure_acc_, &pressure_acc_, &normal_, &tension_acc_})
       b->resize(n);
-    for (auto* b : {&temperature_tmp_, &mass_, &density_, &pressure_, &pressure_start_, &density_error_, &surface_area_, &liquid_rate_,
+    for (auto* b : {&temperature_tmp_, &mass_, &volume_, &density_, &pressure_, &pressure_start_, &density_error_, &surface_area_, &liquid_rate_,
                     &dfsph_factor_, &stiffness_, &divergence_pressure_})
       b->resize(n);
     id_tmp_.resize(n);
@@ -377,9 +377,8 @@ class SimulationImpl final : public Simulation {
     const std::size_t n = liquid_.position.size(), m = rigid_position_.size();
     const LiquidMaterial& l = setup_.liquid;
     const RigidMaterial& r = setup_.rigid;
-    const ThermalParticles liquid_set = ThermalParticles::liquid(liquid, Exec::ptr(liquid_.temperature), Exec::ptr(liquid_.units),
-                                                                 Exec::ptr(density_), particle_mass_, l.conductivity,
-                                                                 l.specific_heat);
+    const ThermalParticles liquid_set = ThermalParticles::liquid(liquid, Exec::ptr(liquid_.temperature), Exec::ptr(mass_),
+                                                                 Exec::ptr(volume_), l.conductivity, l.specific_heat);
     const ThermalParticles rigid_set = ThermalParticles::rigid(rigid, Exec::ptr(rigid_temperature_), Exec::ptr(rigid_volume_),
                                                                r.density, r.conductivity, r.specific_heat);
     // Both rates from the temperatures at the start of the step, then both
@@ -451,6 +450,7 @@ class SimulationImpl final : public Simulation {
     const GridView rigid = rigid_grid_.view(rigid_position_);
     exec_.parallel_for(n, ParticleMass{Exec::ptr(liquid_.units), particle_mass_, Exec::ptr(mass_)});
     exec_.parallel_for(n, ComputeDensity{listed_density(Exec::ptr(liquid_.position)), Exec::ptr(density_)});
+    exec_.parallel_for(n, ParticleVolume{Exec::ptr(mass_), Exec::ptr(density_), Exec::ptr(volume_)});
     if (dfsph()) {
       exec_.parallel_for(n, ComputeDfsphFactor{listed_particles(), Exec::ptr(dfsph_factor_)});
       solve_divergence(planned_dt, report);
@@ -865,7 +865,7 @@ class SimulationImpl final : public Simulation {
   Buffer<Vec3> position_tmp_, velocity_tmp_, predicted_, nonpressure_acc_, pressure_acc_;
   Buffer<std::uint32_t> id_tmp_;
   Buffer<MassUnits> units_tmp_;
-  Buffer<float> temperature_tmp_, mass_, density_, pressure_, pressure_start_, density_error_;
+  Buffer<float> temperature_tmp_, mass_, volume_, density_, pressure_, pressure_start_, density_error_;
   Buffer<float> dfsph_factor_, stiffness_, divergence_pressure_;  // DFSPH's alpha_i, kappa_i and its divergence solve's pressure
   Buffer<float> surface_area_, liquid_rate_;
   Buffer<Vec3> rigid_position_;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -105,6 +106,55 @@ TEST(UniformGrid, NeighbourWalkVisitsExactlyTheParticlesOfThe27Cells) {
   }
 }
 
+// RecordWetting visits only the cells within its contact radius. Every
+// particle closer than the radius must be among them, and the visit keeps
+// the walk's ascending order; below the cell size it visits no cell outside
+// the 27. Besides clustered points, each radius r gets pairs that test the
+// box's edges: a query 0.9925 r past a cell face along each axis and each
+// direction, and a particle 0.995 r from it across that face, so that a box
+// even 1 % too small misses the particle's cell.
+TEST(UniformGrid, RunsWithinARadiusHoldEveryParticleCloserThanIt) {
+  const float h = kGrid.cell_size;
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> anywhere(-0.05f, 1.05f);
+  for (float radius : {0.3f * h, 0.707f * h, 0.999f * h, h, 1.6f * h}) {
+    std::vector<Vec3> points = clustered_points(9);
+    std::vector<Vec3> queries(points.begin(), points.begin() + 100);
+    for (int n = 0; n < 100; ++n) queries.push_back(Vec3{anywhere(rng), anywhere(rng), anywhere(rng)});
+    for (int n = 0; n < 20; ++n) {
+      const Vec3 face = h * Vec3{float(10 + n % 7), float(12 + n % 5), float(15 + n % 3)};
+      for (Vec3 axis : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}})
+        for (float side : {1.0f, -1.0f}) {
+          const Vec3 q = face + (side * 0.9925f * radius) * axis;
+          queries.push_back(q);
+          points.push_back(q - (side * 0.995f * radius) * axis);
+        }
+    }
+    const Built b = build(2, points, kGrid);
+    const GridView view = b.grid.view(b.sorted);
+    for (const Vec3& q : queries) {
+      std::vector<std::uint32_t> within, near;
+      view.for_each_run_within(q, radius, [&](std::uint32_t first, std::uint32_t end) {
+        for (std::uint32_t n = first; n < end; ++n) within.push_back(n);
+      });
+      view.for_each_near(q, [&](std::uint32_t n) { near.push_back(n); });
+      ASSERT_TRUE(std::is_sorted(within.begin(), within.end()));
+      for (std::uint32_t n = 0; n < b.sorted.size(); ++n) {
+        if (!(length_squared(b.sorted[n] - q) < radius * radius)) continue;
+        ASSERT_TRUE(std::binary_search(within.begin(), within.end(), n))
+            << "particle " << n << " at " << length(b.sorted[n] - q) / h << " h from (" << q.x << ", " << q.y << ", " << q.z
+            << "), radius " << radius / h << " h";
+      }
+      if (radius < h) ASSERT_TRUE(std::includes(near.begin(), near.end(), within.begin(), within.end()));
+    }
+  }
+  const Built b = build(2, clustered_points(9), kGrid);
+  std::size_t visited = 0;
+  b.grid.view(b.sorted).for_each_run_within(Vec3{0.2f, 0.3f, 0.25f}, -1.0f,
+                                             [&](std::uint32_t first, std::uint32_t end) { visited += end - first; });
+  EXPECT_EQ(visited, 0u);
+}
+
 // One grid rebuilt for a sequence of particle sets, as a simulation does
 // every step: the CPU backend rewrites only the cells whose begin can have
 // changed, so every entry is checked after each set against a search of
@@ -138,13 +188,14 @@ TEST(UniformGrid, RebuiltGridsRangesMatchEachNewSetOfKeys) {
   }
 }
 
-// The CPU fills a range of lists at once (FillNeighbors::whole_range),
-// without a branch per candidate; the GPU fills one list per thread
-// (operator()). Both must give every particle the points within the radius,
-// ascending as the grid stores them, with the same gradient factors bit for
-// bit, also for lists longer than whole_range keeps locally (the blobs'
+// The CPU fills its lists in one walk, chunk by chunk (FillListChunks),
+// without a branch per candidate; the GPU counts, scans and fills one list
+// per thread (CountNeighbors, FillNeighbors::operator()). Both must give
+// every particle the points within the radius, ascending as the grid
+// stores them, with the same gradient factors bit for bit, for any thread
+// count, also for lists longer than the chunks keep locally (the blobs'
 // cores hold several hundred points within one cell size).
-TEST(NeighbourLists, RangeFillIsTheScanOfEveryPointAndTheOneAtATimeFill) {
+TEST(NeighbourLists, ChunkFillIsTheScanOfEveryPointAndTheOneAtATimeFill) {
   std::mt19937 rng(17);
   std::normal_distribution<float> blob(0.0f, 0.03f);
   std::uniform_real_distribution<float> inside(0.05f, 0.95f);
@@ -154,28 +205,42 @@ TEST(NeighbourLists, RangeFillIsTheScanOfEveryPointAndTheOneAtATimeFill) {
   const Built b = build(2, points, kGrid);
   const GridView view = b.grid.view(b.sorted);
   const CubicSplineKernel kernel = CubicSplineKernel::with_support(kGrid.cell_size);
-  CpuExec exec(2);
-  NeighborListBuffers<CpuExec> lists;
-  const ListedPairs pairs = lists.build_with_gradients(exec, b.sorted, view, kernel);
+  const std::size_t n = b.sorted.size();
+  ASSERT_GT(n, 2 * ListChunks::kChunk);  // several chunks, one of them partial
 
+  // The GPU's way, one particle at a time.
   const float r2 = kernel.h * kernel.h;
-  std::vector<std::uint32_t> one_at_a_time(lists.index.size());
-  std::vector<float> factor_one_at_a_time(lists.index.size());
-  const FillNeighbors fill{b.sorted.data(), view, r2, lists.offset.data(), one_at_a_time.data(), kernel, factor_one_at_a_time.data()};
+  std::vector<std::uint32_t> count(n + 1, 0), offset(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) CountNeighbors{b.sorted.data(), view, r2, count.data()}(i);
+  for (std::size_t i = 0; i < n; ++i) offset[i + 1] = offset[i] + count[i];
+  std::vector<std::uint32_t> one_at_a_time(offset[n]);
+  std::vector<float> factor_one_at_a_time(offset[n]);
+  const FillNeighbors fill{b.sorted.data(), view, r2, offset.data(), one_at_a_time.data(), kernel, factor_one_at_a_time.data()};
   std::size_t long_lists = 0;
-  for (std::size_t i = 0; i < b.sorted.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     fill(i);
     std::vector<std::uint32_t> scan;
-    for (std::uint32_t j = 0; j < b.sorted.size(); ++j)
+    for (std::uint32_t j = 0; j < n; ++j)
       if (length_squared(b.sorted[i] - b.sorted[j]) < r2) scan.push_back(j);
-    const std::vector<std::uint32_t> listed(lists.index.begin() + pairs.list.offset[i], lists.index.begin() + pairs.list.offset[i + 1]);
+    const std::vector<std::uint32_t> listed(one_at_a_time.begin() + offset[i], one_at_a_time.begin() + offset[i + 1]);
     ASSERT_EQ(listed, scan) << "particle " << i;
-    long_lists += listed.size() > 192 ? 1 : 0;
+    long_lists += listed.size() > FillListChunks::kMaxListed ? 1 : 0;
   }
-  EXPECT_GT(long_lists, 100u);  // the fallback to operator() ran
-  EXPECT_EQ(lists.index, one_at_a_time);
-  for (std::size_t k = 0; k < factor_one_at_a_time.size(); ++k)
-    ASSERT_EQ(lists.gradient_factor[k], factor_one_at_a_time[k]) << "pair " << k;
+  EXPECT_GT(long_lists, 100u);  // the chunks' second walk ran
+
+  for (int threads : {1, 2, 3}) {
+    CpuExec exec(threads);
+    NeighborListBuffers<CpuExec> lists;
+    lists.build_with_gradients(exec, b.sorted, view, kernel);
+    EXPECT_EQ(lists.offset, offset) << threads << " threads";
+    EXPECT_EQ(lists.index, one_at_a_time) << threads << " threads";
+    ASSERT_EQ(lists.gradient_factor.size(), factor_one_at_a_time.size());
+    EXPECT_EQ(0, std::memcmp(lists.gradient_factor.data(), factor_one_at_a_time.data(), factor_one_at_a_time.size() * sizeof(float)))
+        << threads << " threads";
+    NeighborListBuffers<CpuExec> plain;  // without gradient factors
+    plain.build(exec, b.sorted, view, kernel.h);
+    EXPECT_EQ(plain.index, one_at_a_time) << threads << " threads";
+  }
 }
 
 // The CPU's densities over the lists (ListedDensity::split_sum: terms

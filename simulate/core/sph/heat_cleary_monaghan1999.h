@@ -18,7 +18,11 @@
 // Cleary & Monaghan's. They also add a small eta^2 to |x_ij|^2 against
 // coincident particles; the cubic spline's F_ij stays bounded as r -> 0
 // (dW/dr vanishes linearly), so we leave eta out rather than bias near
-// neighbours, and skip only exactly coincident pairs.
+// neighbours, and skip only exactly coincident pairs. F_ij equals W'(r) / r,
+// the gradient factor the step's lists keep; reading it from there instead
+// of dividing would round differently and move every frame's bits, which a
+// change for speed must not do (tried: 5 ms of the settled glass's Heat,
+// and the drop's image regression moved).
 //
 // Each pair term is antisymmetric in i, j (k_ij, V_i V_j and F_ij are
 // symmetric, T_i - T_j is not), so the total thermal energy sum_i m_i C_i T_i
@@ -29,59 +33,49 @@
 #include <cstdint>
 
 #include "backend/host_device.h"
+#include "math/keep_if.h"
 #include "math/vec3.h"
 #include "sph/kernel_cubic_spline.h"
-#include "sph/mass_units.h"
 #include "sph/neighbor_list.h"
+#include "sph/sum_in_list_order.h"
 #include "sph/uniform_grid.h"
 
 namespace dp {
 
 // One set of particles of one material, as the heat kernels see it. A
 // liquid particle's volume follows from its adaptive mass and density
-// (V = w m / rho, paper Sec. 4.1); a rigid particle's is its Akinci
-// volume V_b, and its mass rho_material V_b.
+// (V = w m / rho, paper Sec. 4.1; ParticleMass and ParticleVolume, once a
+// step); a rigid particle's is its Akinci volume V_b, and its mass
+// rho_material V_b.
 struct ThermalParticles {
-  GridView grid;              // sorted positions
-  const float* temperature;   // K (or any offset scale), sorted like the positions
-  const MassUnits* units;     // liquid: w_j; null for a rigid set
-  const float* density;       // liquid: rho_j, kg/m^3
-  float particle_mass;        // liquid: m of a full particle, kg
-  const float* volume;        // rigid: V_b, m^3; null for a liquid set
-  float material_density;     // rigid: kg/m^3
-  float conductivity;         // kappa, W/(m K)
-  float specific_heat;        // C, J/(kg K)
+  GridView grid;            // sorted positions
+  const float* temperature;  // K (or any offset scale), sorted like the positions
+  const float* volume;       // V_j, m^3
+  const float* mass;         // liquid: m_j, kg; null for a rigid set
+  float material_density;    // rigid: kg/m^3
+  float conductivity;        // kappa, W/(m K)
+  float specific_heat;       // C, J/(kg K)
 
-  static ThermalParticles liquid(GridView grid, const float* temperature, const MassUnits* units,
-                                 const float* density, float particle_mass, float conductivity,
-                                 float specific_heat) {
-    return ThermalParticles{grid, temperature, units, density, particle_mass,  // liquid
-                            nullptr, 0.0f,                                     // no rigid volumes
-                            conductivity, specific_heat};
+  static ThermalParticles liquid(GridView grid, const float* temperature, const float* mass, const float* volume,
+                                 float conductivity, float specific_heat) {
+    return ThermalParticles{grid, temperature, volume, mass, 0.0f, conductivity, specific_heat};
   }
   static ThermalParticles rigid(GridView grid, const float* temperature, const float* volume,
                                 float material_density, float conductivity, float specific_heat) {
-    return ThermalParticles{grid, temperature, nullptr, nullptr, 0.0f,  // no liquid masses
-                            volume, material_density,                // rigid
-                            conductivity, specific_heat};
+    return ThermalParticles{grid, temperature, volume, nullptr, material_density, conductivity, specific_heat};
   }
 
-  DP_HD float volume_of(std::uint32_t j) const {
-    return volume ? volume[j] : particle_mass * weight_of(units[j]) / density[j];
-  }
-  DP_HD float mass_of(std::uint32_t j) const {
-    return volume ? material_density * volume[j] : particle_mass * weight_of(units[j]);
-  }
+  DP_HD float mass_of(std::uint32_t j) const { return mass ? mass[j] : material_density * volume[j]; }
 };
+
+// F_ij = x_ij . grad_i W_ij / |x_ij|^2, for |x_ij|^2 = r2 in (0, h^2).
+DP_HD inline float conduction_kernel_factor(Vec3 xij, Vec3 grad, float r2) { return dot(xij, grad) / r2; }
 
 // k_ij of Cleary & Monaghan: twice the harmonic mean of the conductivities.
 DP_HD inline float pair_conductivity(float kappa_i, float kappa_j) {
   float sum = kappa_i + kappa_j;
   return sum > 0.0f ? 4.0f * kappa_i * kappa_j / sum : 0.0f;
 }
-
-// F_ij = x_ij . grad_i W_ij / |x_ij|^2, for |x_ij|^2 = r2 in (0, h^2).
-DP_HD inline float conduction_kernel_factor(Vec3 xij, Vec3 grad, float r2) { return dot(xij, grad) / r2; }
 
 // dT_i/dt of particle i of `self`, from its own set and, if `with_other`,
 // from a second set (liquid <-> rigid). Writes rate[i], K/s.
@@ -93,27 +87,85 @@ struct ComputeTemperatureRate {
   float* rate;
   ListedPairs self_pairs{}, other_pairs{};  // the step's lists for i, if any
 
+  static constexpr std::uint32_t kNobody = 0xffffffffu;
+
+  // V_j (T_i - T_j) F_ij, the pair's term before k_ij.
+  DP_HD static float pair_term(const ThermalParticles& set, std::uint32_t j, float ti, Vec3 xij, Vec3 grad, float r2) {
+    return set.volume[j] * (ti - set.temperature[j]) * conduction_kernel_factor(xij, grad, r2);
+  }
+
   // sum_j k_ij V_j (T_i - T_j) F_ij over the neighbours in `set`, with
   // `skip` = i in its own set (no index matches otherwise).
-  DP_HD float exchange_with(const ThermalParticles& set, const ListedPairs& pairs, std::size_t i, float ti, float kappa_i,
+  DP_HD float exchange_with(const ThermalParticles& set, const ListedPairs& pairs, std::size_t i, float ti,
                             std::uint32_t skip) const {
-    const float kij = pair_conductivity(kappa_i, set.conductivity);
     float sum = 0.0f;
     for_each_pair_gradient(set.grid, pairs, i, self.grid.position[i], kernel, [&](std::uint32_t j, Vec3 xij, Vec3 grad) {
       const float r2 = length_squared(xij);
       if (j == skip || r2 <= 0.0f) return;
-      sum += set.volume_of(j) * (ti - set.temperature[j]) * conduction_kernel_factor(xij, grad, r2);
+      sum += pair_term(set, j, ti, xij, grad, r2);
     });
-    return kij * sum;
+    return pair_conductivity(self.conductivity, set.conductivity) * sum;
+  }
+
+  DP_HD float rate_from(std::size_t i, float exchange) const {
+    return self.volume[i] * exchange / (self.mass_of(static_cast<std::uint32_t>(i)) * self.specific_heat);
   }
 
   DP_HD void operator()(std::size_t i) const {
-    const std::uint32_t me = static_cast<std::uint32_t>(i);
-    const std::uint32_t nobody = 0xffffffffu;
     const float ti = self.temperature[i];
-    float exchange = exchange_with(self, self_pairs, i, ti, self.conductivity, me);
-    if (with_other) exchange += exchange_with(other, other_pairs, i, ti, self.conductivity, nobody);
-    rate[i] = self.volume_of(me) * exchange / (self.mass_of(me) * self.specific_heat);
+    float exchange = exchange_with(self, self_pairs, i, ti, static_cast<std::uint32_t>(i));
+    if (with_other) exchange += exchange_with(other, other_pairs, i, ti, kNobody);
+    rate[i] = rate_from(i, exchange);
+  }
+
+  // Elements begin .. end - 1 at once (CpuExec), each sum with its terms
+  // first (sum_in_list_order.h); a set without a list (the liquid around a
+  // rigid particle) is walked by gather_near. Same pairs, same order, same
+  // bits as operator().
+  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
+    for (std::size_t i = begin; i < end; ++i) {
+      const float ti = self.temperature[i];
+      float exchange = 0.0f;
+      if (!exchange_in_list_order(self, self_pairs, i, ti, static_cast<std::uint32_t>(i), exchange) ||
+          (with_other && !exchange_in_list_order(other, other_pairs, i, ti, kNobody, exchange))) {
+        (*this)(i);
+        continue;
+      }
+      rate[i] = rate_from(i, exchange);
+    }
+  }
+
+ private:
+  // exchange += k_ij sum_j ..., as exchange_with adds it; false where the
+  // neighbours do not fit the terms' arrays.
+  DP_HOST_INLINE bool exchange_in_list_order(const ThermalParticles& set, const ListedPairs& pairs, std::size_t i,
+                                             float ti, std::uint32_t skip, float& exchange) const {
+    const Vec3 xi = self.grid.position[i];
+    const auto term = [&](std::uint32_t j, Vec3 xij, Vec3 grad) {
+      const float r2 = length_squared(xij);
+      return keep_if(pair_term(set, j, ti, xij, grad, r2), (j != skip) & (r2 > 0.0f));
+    };
+    float sum = 0.0f;
+    if (pairs.present()) {
+      if (!fits_in_list_order(pairs.list, i)) return false;
+      const std::uint32_t first = pairs.list.offset[i];
+      sum = sum_in_list_order(0.0f, pairs.list.offset[i + 1] - first, [&](std::uint32_t k) {
+        const std::uint32_t j = pairs.list.index[first + k];
+        const Vec3 xij = xi - set.grid.position[j];
+        return term(j, xij, pairs.gradient_factor[first + k] * xij);
+      });
+    } else {
+      std::uint32_t near[kMaxTermsInOrder + kNearBlock];
+      const std::uint32_t count = gather_near(set.grid, xi, kernel.h * kernel.h, near, kMaxTermsInOrder);
+      if (count > kMaxTermsInOrder) return false;
+      sum = sum_in_list_order(0.0f, count, [&](std::uint32_t k) {
+        const std::uint32_t j = near[k];
+        const Vec3 xij = xi - set.grid.position[j];
+        return term(j, xij, kernel.gradW(xij));
+      });
+    }
+    exchange += pair_conductivity(self.conductivity, set.conductivity) * sum;
+    return true;
   }
 };
 

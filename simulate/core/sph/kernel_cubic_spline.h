@@ -43,7 +43,7 @@ struct CubicSplineKernel {
   // The same at distance r. Both pieces are computed and one selected on
   // their bits (keep_if.h): a new list's pairs fall on either side of
   // q = 1/2 at random, and the branch g++ makes of a plain `?:` was
-  // mispredicted on every particle (FillNeighbors::whole_range). W keeps
+  // mispredicted on every particle (FillListChunks). W keeps
   // its branches for loops that take one pair at a time: in a liquid at
   // rest nearly every pair takes the outer piece, so there the branch is
   // predicted, and computing both pieces cost a settled glass's pressure

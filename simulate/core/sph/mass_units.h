@@ -28,4 +28,13 @@ struct ParticleMass {
   DP_HD void operator()(std::size_t i) const { mass[i] = particle_mass * weight_of(units[i]); }
 };
 
+// V_i = m_i / rho_i once a step, for the sums that weigh each neighbour by
+// its volume. The same floats as particle_mass * weight_of(units) / density.
+struct ParticleVolume {
+  const float* mass;
+  const float* density;
+  float* volume;
+  DP_HD void operator()(std::size_t i) const { volume[i] = mass[i] / density[i]; }
+};
+
 }  // namespace dp

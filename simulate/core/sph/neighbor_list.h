@@ -3,9 +3,13 @@
 // of a set within the support radius, found once through the grid and then
 // read by every PCISPH iteration. A list holds about 30-40 neighbours where
 // the 27 grid cells hold about 200 candidates, so the iterations touch
-// several times less memory. Built by count, exclusive scan and fill, each
-// particle writing only its own slice: deterministic on both backends.
+// several times less memory. The GPU builds them by count, exclusive scan
+// and fill, each particle writing only its own slice; the CPU in one walk,
+// chunk by chunk (FillListChunks). Both are deterministic and give the same
+// lists bit for bit.
+#include <algorithm>
 #include <cstdint>
+#include <vector>
 
 #include "backend/host_device.h"
 #include "sph/kernel_cubic_spline.h"
@@ -23,6 +27,43 @@ struct NeighborList {
   }
 };
 
+// The particles of `set` within radius2 of x, in the order of the grid's
+// walk (for_each_near), written to near[0 .. ) for the CPU's whole_range
+// paths. The distance tests of a run of candidates are taken in one loop,
+// which vectorises; each candidate is then written at the list's end and
+// kept by advancing the end by its test's 0 or 1, with no branch: about one
+// candidate in six of the 27 cells is a neighbour, at random, and a branch
+// on the test was mispredicted on most particles' lists. Returns how many
+// are near; only the first `capacity` are written, so `near` holds
+// capacity + kNearBlock entries and a caller whose count exceeds capacity
+// takes its one-loop path.
+inline constexpr std::uint32_t kNearBlock = 64;
+
+DP_HOST_INLINE std::uint32_t gather_near(const GridView& set, Vec3 x, float radius2, std::uint32_t* near,
+                                         std::uint32_t capacity) {
+  std::uint32_t found = 0, kept = 0;
+  std::uint32_t test[kNearBlock];
+  // Loops over the rows, not for_each_run_near's callback: a lambda would
+  // not inline into the launcher's AVX2 copy of a whole_range.
+  const GridView::CellBox box = set.cells_near(x);
+  for (int k = box.k0; k <= box.k1; ++k)
+    for (int j = box.j0; j <= box.j1; ++j) {
+      const std::uint32_t run_end = set.row_end(box, j, k);
+      for (std::uint32_t block = set.row_first(box, j, k); block < run_end; block += kNearBlock) {
+        const std::uint32_t size = run_end - block < kNearBlock ? run_end - block : kNearBlock;
+        const Vec3* position = set.position + block;
+        for (std::uint32_t m = 0; m < size; ++m) test[m] = length_squared(x - position[m]) < radius2 ? 1u : 0u;
+        kept = kept < capacity ? kept : capacity;  // bounds this block's stores below capacity + kNearBlock
+        for (std::uint32_t m = 0; m < size; ++m) {
+          near[kept] = block + m;
+          kept += test[m];
+          found += test[m];
+        }
+      }
+    }
+  return found;
+}
+
 // Neighbours of particle i of `query` (positions `query_position`) among
 // `set`, within radius^2, i itself included when both are the same set.
 struct CountNeighbors {
@@ -38,7 +79,8 @@ struct CountNeighbors {
   }
 };
 
-// Fills each particle's slice, as CountNeighbors sized it. Where
+// Fills each particle's slice, as CountNeighbors sized it (the GPU's lists;
+// the CPU's are FillListChunks'). Where
 // gradient_factor is given, also each pair's
 // CubicSplineKernel::gradient_factor (the kernel's support radius is the
 // list's): PCISPH evaluates the pressure force at the positions of the
@@ -63,49 +105,95 @@ struct FillNeighbors {
       index[k++] = j;
     });
   }
+};
 
-  // Elements begin .. end - 1 at once (CpuExec). About one candidate in six
-  // of the 27 cells is a neighbour, at random, so operator()'s test was a
-  // branch mispredicted on most particles' lists and filling took five
-  // times as long as counting. Here the tests of a run of candidates are
-  // taken in one loop (it vectorises, as CountNeighbors' does), then each
-  // candidate is written to a local list and kept by advancing its end by
-  // its test's 0 or 1; distances and gradient factors follow in loops of
-  // their own over the kept pairs (in one loop with the positions' gathers,
-  // g++ leaves the factors' roots and divisions scalar). Same pairs, same order, same bits as
-  // operator(); a list longer than kMaxListed (never in a liquid at rest
-  // density) takes operator().
+// The CPU's lists in one walk of the grid, where the GPU's take two (count,
+// scan, fill). The particles are cut into chunks of kChunk, and each chunk
+// appends its particles' lists to buffers of its own; once the counts are
+// scanned, CopyListChunks moves each chunk's buffers into place. Chunks
+// depend on the particle count alone, so the lists do not depend on the
+// thread count, and the pairs, their order and their gradient factors are
+// FillNeighbors' bit for bit: the same test (gather_near, without a branch
+// per candidate), factors from the same distances. A list longer than
+// kMaxListed (never in a liquid at rest density) walks the grid again.
+struct ListChunks {
+  static constexpr std::size_t kChunk = 2048;
+  std::vector<std::vector<std::uint32_t>> index;
+  std::vector<std::vector<float>> gradient_factor;
+
+  static std::size_t chunks_of(std::size_t n) { return (n + kChunk - 1) / kChunk; }
+  void resize(std::size_t n) {
+    index.resize(chunks_of(n));
+    gradient_factor.resize(chunks_of(n));
+  }
+  // The chunks c that start in [begin, end), first_starting_at(begin) <= c
+  // and c * kChunk < end: a whole_range share of any parallel_for over the
+  // particles takes each chunk once. (A loop, not a callback: a lambda
+  // would not inline into the launcher's AVX2 copy.)
+  static std::size_t first_starting_at(std::size_t begin) { return (begin + kChunk - 1) / kChunk; }
+};
+
+struct FillListChunks {
+  static constexpr std::uint32_t kMaxListed = 192;
+  const Vec3* query_position;
+  GridView set;
+  float radius2;
+  CubicSplineKernel kernel;
+  bool with_gradients;
+  std::size_t n;
+  std::uint32_t* count;
+  ListChunks* chunks;
+
+  // Inlined, as every whole_range, into the launcher's AVX2 copy.
   DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
-    constexpr std::uint32_t kMaxListed = 192, kBlock = 64;
-    std::uint32_t local[kMaxListed + kBlock];  // a block's stores land below kept + kBlock
-    std::uint32_t near[kBlock];
+    for (std::size_t c = ListChunks::first_starting_at(begin); c * ListChunks::kChunk < end; ++c) fill(c);
+  }
+
+ private:
+  DP_HOST_INLINE void fill(std::size_t c) const {
+    std::vector<std::uint32_t>& index = chunks->index[c];
+    std::vector<float>& factor = chunks->gradient_factor[c];
+    index.clear();
+    factor.clear();
+    std::uint32_t local[kMaxListed + kNearBlock];
     float distance[kMaxListed];
-    for (std::size_t i = begin; i < end; ++i) {
-      const std::uint32_t first = offset[i], count = offset[i + 1] - first;
-      if (count > kMaxListed) {
-        (*this)(i);
-        continue;
-      }
+    const std::size_t last = (c + 1) * ListChunks::kChunk < n ? (c + 1) * ListChunks::kChunk : n;
+    for (std::size_t i = c * ListChunks::kChunk; i < last; ++i) {
       const Vec3 xi = query_position[i];
-      std::uint32_t kept = 0;
-      set.for_each_run_near(xi, [&](std::uint32_t run_first, std::uint32_t run_end) {
-        for (std::uint32_t block = run_first; block < run_end; block += kBlock) {
-          const std::uint32_t size = run_end - block < kBlock ? run_end - block : kBlock;
-          const Vec3* position = set.position + block;
-          for (std::uint32_t m = 0; m < size; ++m) near[m] = length_squared(xi - position[m]) < radius2 ? 1u : 0u;
-          kept = kept < count ? kept : count;  // CountNeighbors' count bounds it already; this bounds the stores
-          for (std::uint32_t m = 0; m < size; ++m) {
-            local[kept] = block + m;
-            kept += near[m];
-          }
+      std::uint32_t found = gather_near(set, xi, radius2, local, kMaxListed);
+      if (found > kMaxListed) {
+        const std::size_t first = index.size();
+        set.for_each_near(xi, [&](std::uint32_t j) {
+          if (length_squared(xi - set.position[j]) < radius2) index.push_back(j);
+        });
+        if (with_gradients)
+          for (std::size_t k = first; k < index.size(); ++k) factor.push_back(kernel.gradient_factor(xi - set.position[index[k]]));
+      } else {
+        index.insert(index.end(), local, local + found);
+        if (with_gradients) {
+          for (std::uint32_t k = 0; k < found; ++k) distance[k] = length(xi - set.position[local[k]]);
+          const std::size_t first = factor.size();
+          factor.resize(first + found);
+          for (std::uint32_t k = 0; k < found; ++k) factor[first + k] = kernel.gradient_factor_at(distance[k]);
         }
-      });
-      std::uint32_t* out = index + first;
-      for (std::uint32_t k = 0; k < count; ++k) out[k] = local[k];
-      if (!gradient_factor) continue;
-      for (std::uint32_t k = 0; k < count; ++k) distance[k] = length(xi - set.position[local[k]]);
-      float* factor = gradient_factor + first;
-      for (std::uint32_t k = 0; k < count; ++k) factor[k] = kernel.gradient_factor_at(distance[k]);
+      }
+      count[i] = found;
+    }
+  }
+};
+
+struct CopyListChunks {
+  const ListChunks* chunks;
+  const std::uint32_t* offset;
+  std::uint32_t* index;
+  float* gradient_factor;  // null: no factors
+
+  DP_HOST_INLINE void whole_range(std::size_t begin, std::size_t end) const {
+    for (std::size_t c = ListChunks::first_starting_at(begin); c * ListChunks::kChunk < end; ++c) {
+      const std::uint32_t first = offset[c * ListChunks::kChunk];
+      std::copy(chunks->index[c].begin(), chunks->index[c].end(), index + first);
+      if (gradient_factor)
+        std::copy(chunks->gradient_factor[c].begin(), chunks->gradient_factor[c].end(), gradient_factor + first);
     }
   }
 };
@@ -164,6 +252,7 @@ template <class Exec>
 struct NeighborListBuffers {
   typename Exec::template Buffer<std::uint32_t> count, offset, index;
   typename Exec::template Buffer<float> gradient_factor;  // build_with_gradients only
+  ListChunks chunks_;                                     // the CPU's one-walk fill (FillListChunks)
 
   NeighborList build(const Exec& exec, const typename Exec::template Buffer<Vec3>& query, const GridView& set,
                      float radius) {
@@ -182,14 +271,23 @@ struct NeighborListBuffers {
                     const CubicSplineKernel& kernel, bool with_gradients) {
     const std::size_t n = query.size();
     count.resize(n + 1);
-    exec.parallel_for(n, CountNeighbors{Exec::ptr(query), set, r2, Exec::ptr(count)});
+    if constexpr (Exec::kBuffersInHostMemory) {
+      chunks_.resize(n);
+      exec.parallel_for(n, FillListChunks{Exec::ptr(query), set, r2, kernel, with_gradients, n, Exec::ptr(count), &chunks_});
+    } else {
+      exec.parallel_for(n, CountNeighbors{Exec::ptr(query), set, r2, Exec::ptr(count)});
+    }
     exec.parallel_for(1, ClearLastCount{Exec::ptr(count), n});
     exec.exclusive_scan(count, offset);
     const std::uint32_t total = Exec::download_one(offset, n);
     index.resize(total);
     if (with_gradients) gradient_factor.resize(total);
-    exec.parallel_for(n, FillNeighbors{Exec::ptr(query), set, r2, Exec::ptr(offset), Exec::ptr(index), kernel,
-                                       with_gradients ? Exec::ptr(gradient_factor) : nullptr});
+    float* factor = with_gradients ? Exec::ptr(gradient_factor) : nullptr;
+    if constexpr (Exec::kBuffersInHostMemory) {
+      exec.parallel_for(n, CopyListChunks{&chunks_, Exec::ptr(offset), Exec::ptr(index), factor});
+    } else {
+      exec.parallel_for(n, FillNeighbors{Exec::ptr(query), set, r2, Exec::ptr(offset), Exec::ptr(index), kernel, factor});
+    }
     return NeighborList{Exec::ptr(offset), Exec::ptr(index)};
   }
 };

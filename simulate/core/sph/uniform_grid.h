@@ -55,20 +55,54 @@ struct GridView {
     });
   }
 
-  // The same particles as runs: f(first, end) for each of the nine rows.
-  template <class F>
-  DP_HD void for_each_run_near(Vec3 p, const F& f) const {
+  // A box of cells, inclusive on every axis; each of its rows along x is one
+  // contiguous run of particles, [row_first, row_end).
+  struct CellBox {
+    int i0, i1, j0, j1, k0, k1;
+  };
+  DP_HD std::uint32_t row_first(const CellBox& b, int j, int k) const { return cell_begin[grid.linear(b.i0, j, k)]; }
+  DP_HD std::uint32_t row_end(const CellBox& b, int j, int k) const { return cell_end[grid.linear(b.i1, j, k)]; }
+
+  // The 27 cells around p, less those outside the grid.
+  DP_HD CellBox cells_near(Vec3 p) const {
     int ci, cj, ck;
     grid.cell_of(p, ci, cj, ck);
-    const int i0 = ci > 0 ? ci - 1 : 0;
-    const int i1 = ci + 1 < grid.nx ? ci + 1 : grid.nx - 1;
-    for (int k = ck - 1; k <= ck + 1; ++k) {
-      if (k < 0 || k >= grid.nz) continue;
-      for (int j = cj - 1; j <= cj + 1; ++j) {
-        if (j < 0 || j >= grid.ny) continue;
-        f(cell_begin[grid.linear(i0, j, k)], cell_end[grid.linear(i1, j, k)]);
-      }
-    }
+    return CellBox{ci > 0 ? ci - 1 : 0, ci + 1 < grid.nx ? ci + 1 : grid.nx - 1,
+                   cj > 0 ? cj - 1 : 0, cj + 1 < grid.ny ? cj + 1 : grid.ny - 1,
+                   ck > 0 ? ck - 1 : 0, ck + 1 < grid.nz ? ck + 1 : grid.nz - 1};
+  }
+
+  // The cells that overlap the box of half-width `radius` around p: every
+  // particle closer to p than radius lies in them; for a radius below the
+  // cell size, one to eight cells in place of 27. The box is widened by a
+  // part in 10^4 so that rounding in the cell lookups cannot drop a cell
+  // that such a particle lies in. A negative radius gives an empty box.
+  DP_HD CellBox cells_within(Vec3 p, float radius) const {
+    const float r = radius * 1.0001f;
+    CellBox b;
+    grid.cell_of(p - Vec3{r, r, r}, b.i0, b.j0, b.k0);
+    grid.cell_of(p + Vec3{r, r, r}, b.i1, b.j1, b.k1);
+    return b;
+  }
+
+  // f(first, end) for each row of the box, in the sorted order.
+  template <class F>
+  DP_HD void for_each_run_in(const CellBox& b, const F& f) const {
+    for (int k = b.k0; k <= b.k1; ++k)
+      for (int j = b.j0; j <= b.j1; ++j) f(row_first(b, j, k), row_end(b, j, k));
+  }
+
+  // The same particles as for_each_near, as runs: f(first, end) for each of
+  // the nine rows.
+  template <class F>
+  DP_HD void for_each_run_near(Vec3 p, const F& f) const {
+    for_each_run_in(cells_near(p), f);
+  }
+
+  // The runs of cells_within(p, radius), in the walk's order.
+  template <class F>
+  DP_HD void for_each_run_within(Vec3 p, float radius, const F& f) const {
+    for_each_run_in(cells_within(p, radius), f);
   }
 };
 

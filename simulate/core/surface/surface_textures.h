@@ -198,9 +198,9 @@ class SurfaceTextures {
       const float decay = tex.setup.wetting_decay;
       const float dry = decay > 0 ? std::exp(-dt / decay) : 0.0f;
       // Without liquid nothing touches; the history only fades.
-      const float r2 = liquid_count > 0 ? contact_radius_ * contact_radius_ : -1.0f;
+      const float r = liquid_count > 0 ? contact_radius_ : -1.0f;
       exec.parallel_for(tex.size(), RecordWetting{liquid, Exec::ptr(near_liquid_), Exec::ptr(tex.position), Exec::ptr(tex.normal),
-                                                  r2, dry, Exec::ptr(tex.wetting), Exec::ptr(tex.liquid_cell_slot)});
+                                                  r, dry, Exec::ptr(tex.wetting), Exec::ptr(tex.liquid_cell_slot)});
     }
   }
 

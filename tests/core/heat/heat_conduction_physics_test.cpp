@@ -89,14 +89,17 @@ Conduction conduct(const std::vector<ThermalBlock>& blocks, double duration, int
     volume[s].assign(n, kSpacing * kSpacing * kSpacing);
   }
   std::vector<ThermalParticles> particles;
+  std::vector<heat_test::MassesAndVolumes> liquid(count);
   for (std::size_t s = 0; s < count; ++s) {
     const Material& m = blocks[s].material;
-    particles.push_back(blocks[s].rigid
-                            ? ThermalParticles::rigid(sets[s].view(), temperature[s].data(), volume[s].data(),
-                                                      m.density, m.conductivity, m.specific_heat)
-                            : ThermalParticles::liquid(sets[s].view(), temperature[s].data(), units[s].data(),
-                                                       density[s].data(), m.density * volume[s][0],
-                                                       m.conductivity, m.specific_heat));
+    if (blocks[s].rigid) {
+      particles.push_back(ThermalParticles::rigid(sets[s].view(), temperature[s].data(), volume[s].data(), m.density,
+                                                  m.conductivity, m.specific_heat));
+      continue;
+    }
+    liquid[s] = heat_test::masses_and_volumes(units[s], density[s], m.density * volume[s][0]);
+    particles.push_back(ThermalParticles::liquid(sets[s].view(), temperature[s].data(), liquid[s].mass.data(),
+                                                 liquid[s].volume.data(), m.conductivity, m.specific_heat));
   }
 
   float dt = 1e30f;

@@ -4,6 +4,7 @@
 // the direction of heat flow, held particles, and the time-step limit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "heat_scene.h"
 #include "sph/heat_cleary_monaghan1999.h"
 #include "sph/neighbor_list.h"
+#include "sph/sum_in_list_order.h"
 #include "sph/surface_tension_akinci2013.h"
 
 namespace dp {
@@ -28,13 +30,20 @@ struct MixedScene {
   std::vector<float> liquid_t, rigid_t, density, volume;
   std::vector<MassUnits> units;
   float particle_mass = 1000.0f * kSpacing * kSpacing * kSpacing;
+  heat_test::MassesAndVolumes liquid_amounts;
 
-  explicit MixedScene(const CpuExec& exec) {
+  // `clump` more liquid particles packed within 1 mm of a point 2 mm above
+  // the rigid set: their lists, and those of the rigid particles below,
+  // outgrow the in-order sums' arrays (kMaxTermsInOrder).
+  explicit MixedScene(const CpuExec& exec, int clump = 0) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::vector<Vec3> pl, pr;
     for (int i = 0; i < 3000; ++i) pl.push_back(0.12f * Vec3{u(rng), u(rng), u(rng)});
     for (int i = 0; i < 1500; ++i) pr.push_back(Vec3{0.12f * u(rng), 0.12f * u(rng), -0.06f * u(rng)});
+    std::mt19937 clump_rng(13);
+    std::uniform_real_distribution<float> c(-1e-3f, 1e-3f);
+    for (int i = 0; i < clump; ++i) pl.push_back(Vec3{0.06f, 0.06f, 0.002f} + Vec3{c(clump_rng), c(clump_rng), c(clump_rng)});
     UniformGrid grid = heat_test::grid_around({pl, pr}, kernel.h);
     liquid = heat_test::sort_into(exec, pl, grid);
     rigid = heat_test::sort_into(exec, pr, grid);
@@ -47,10 +56,11 @@ struct MixedScene {
       rigid_t.push_back(280.0f + 60.0f * u(rng));
       volume.push_back((0.5f + u(rng)) * kSpacing * kSpacing * kSpacing);
     }
+    liquid_amounts = heat_test::masses_and_volumes(units, density, particle_mass);
   }
   ThermalParticles liquid_particles() {
-    return ThermalParticles::liquid(liquid.view(), liquid_t.data(), units.data(), density.data(), particle_mass,
-                                    0.6f, 4186.0f);
+    return ThermalParticles::liquid(liquid.view(), liquid_t.data(), liquid_amounts.mass.data(),
+                                    liquid_amounts.volume.data(), 0.6f, 4186.0f);
   }
   ThermalParticles rigid_particles() {
     return ThermalParticles::rigid(rigid.view(), rigid_t.data(), volume.data(), 7850.0f, 50.0f, 490.0f);
@@ -120,6 +130,46 @@ TEST(heat_NeighbourLists, ListedPairsGiveTheGridWalksRatesAndNormalsBitForBit) {
   EXPECT_EQ(0, std::memcmp(normal_walked.data(), normal_listed.data(), n * sizeof(Vec3)));
 }
 
+// On the CPU, ComputeTemperatureRate::whole_range computes each list's
+// terms first and adds them in the list's order, and walks the grid for the
+// liquid around a rigid particle with gather_near; the GPU runs the
+// functor's one loop. Both must give the same bits, for listed and walked
+// neighbours, and for lists too long for the terms' arrays. A sum added out
+// of the list's order, or a pair gathered out of the walk's, fails here.
+TEST(heat_NeighbourLists, SumsInListOrderAreTheOneLoopSumsBitForBit) {
+  CpuExec exec(2);
+  MixedScene scene(exec, 400);
+  NeighborListBuffers<CpuExec> liquid_liquid, liquid_rigid, rigid_rigid;
+  const ListedPairs ll = liquid_liquid.build_with_gradients(exec, scene.liquid.position, scene.liquid.view(), scene.kernel);
+  const ListedPairs lr = liquid_rigid.build_with_gradients(exec, scene.liquid.position, scene.rigid.view(), scene.kernel);
+  const ListedPairs rr = rigid_rigid.build_with_gradients(exec, scene.rigid.position, scene.rigid.view(), scene.kernel);
+  const std::size_t n = scene.liquid.size(), m = scene.rigid.size();
+  std::uint32_t longest = 0;
+  for (std::size_t i = 0; i < n; ++i) longest = std::max(longest, ll.list.offset[i + 1] - ll.list.offset[i]);
+  ASSERT_GT(longest, kMaxTermsInOrder);   // the one-loop fallback is taken too
+  ASSERT_GT(lr.list.offset[n], n / 10);  // pairs across the sets, walked from the rigid side
+
+  const ThermalParticles l = scene.liquid_particles(), b = scene.rigid_particles();
+  const auto one_loop = [](std::size_t count, const ComputeTemperatureRate& rate) {
+    for (std::size_t i = 0; i < count; ++i) rate(i);
+  };
+  for (bool listed : {false, true}) {
+    std::vector<float> split(n), single(n), rigid_split(m), rigid_single(m);
+    const ListedPairs none{};
+    const ComputeTemperatureRate liquid_rate{l, b, true, scene.kernel, split.data(), listed ? ll : none, listed ? lr : none};
+    const ComputeTemperatureRate rigid_rate{b, l, true, scene.kernel, rigid_split.data(), listed ? rr : none};
+    exec.parallel_for(n, liquid_rate);
+    exec.parallel_for(m, rigid_rate);
+    ComputeTemperatureRate liquid_single = liquid_rate, rigid_single_rate = rigid_rate;
+    liquid_single.rate = single.data();
+    rigid_single_rate.rate = rigid_single.data();
+    one_loop(n, liquid_single);
+    one_loop(m, rigid_single_rate);
+    EXPECT_TRUE(bitwise_equal(split, single)) << (listed ? "listed" : "walked") << ", liquid";
+    EXPECT_TRUE(bitwise_equal(rigid_split, rigid_single)) << (listed ? "listed" : "walked") << ", rigid";
+  }
+}
+
 TEST(heat_Conservation, HeatPowersCancelAcrossSetsWithAdaptiveMasses) {
   CpuExec exec(2);
   MixedScene scene(exec);
@@ -149,8 +199,9 @@ TEST(heat_Conservation, HeatFlowsFromHotToCold) {
   SortedSet liquid = heat_test::sort_into(exec, pl, grid), rigid = heat_test::sort_into(exec, pr, grid);
   std::vector<float> tl{350.0f}, tr{300.0f}, density{980.0f}, volume{2e-6f}, rl(1), rr(1);
   std::vector<MassUnits> units{kFullParticleUnits / 3};
-  ThermalParticles l = ThermalParticles::liquid(liquid.view(), tl.data(), units.data(), density.data(), 1e-3f, 0.6f,
-                                                4186.0f);
+  const heat_test::MassesAndVolumes amounts = heat_test::masses_and_volumes(units, density, 1e-3f);
+  ThermalParticles l = ThermalParticles::liquid(liquid.view(), tl.data(), amounts.mass.data(), amounts.volume.data(),
+                                                0.6f, 4186.0f);
   ThermalParticles b = ThermalParticles::rigid(rigid.view(), tr.data(), volume.data(), 2700.0f, 200.0f, 900.0f);
   ComputeTemperatureRate{l, b, true, kernel, rl.data()}(0);
   ComputeTemperatureRate{b, l, true, kernel, rr.data()}(0);
@@ -196,8 +247,10 @@ TEST(heat_Integration, TimeStepLimitKeepsTheMaximumPrinciple) {
   std::vector<float> t(p.size()), rate(p.size()), density(p.size(), rho);
   for (float& x : t) x = u(rng) < 0.5f ? 0.0f : 1.0f;  // the roughest field: jumps everywhere
   std::vector<MassUnits> units(p.size(), kFullParticleUnits);
-  ThermalParticles water = ThermalParticles::liquid(set.view(), t.data(), units.data(), density.data(),
-                                                    rho * kSpacing * kSpacing * kSpacing, kappa, c);
+  const heat_test::MassesAndVolumes amounts =
+      heat_test::masses_and_volumes(units, density, rho * kSpacing * kSpacing * kSpacing);
+  ThermalParticles water =
+      ThermalParticles::liquid(set.view(), t.data(), amounts.mass.data(), amounts.volume.data(), kappa, c);
   const float dt = heat_time_step_limit(kernel, rho, c, kappa);
   for (int step = 0; step < 20; ++step) {
     exec.parallel_for(p.size(), ComputeTemperatureRate{water, water, false, kernel, rate.data()});

@@ -12,6 +12,7 @@
 #include "backend/cuda_exec.cuh"
 #include "backend/device.h"
 #include "sph/heat_cleary_monaghan1999.h"
+#include "sph/mass_units.h"
 #include "sph/particle_grid.h"
 
 namespace dp {
@@ -55,29 +56,33 @@ TEST_F(heat_CudaAgreement, RatesMatchTheHostWithinRounding) {
   units = liquid.to_sorted(units);
   tr = rigid.to_sorted(tr);
   volume = rigid.to_sorted(volume);
-  CudaExec::Buffer<float> d_tl, d_tr, d_density, d_volume, d_rl(pl.size()), d_rr(pr.size());
-  CudaExec::Buffer<MassUnits> d_units;
+  const float m = 1000.0f * s * s * s;
+  std::vector<float> mass(pl.size()), liquid_volume(pl.size());
+  for (std::size_t i = 0; i < pl.size(); ++i) {
+    ParticleMass{units.data(), m, mass.data()}(i);
+    ParticleVolume{mass.data(), density.data(), liquid_volume.data()}(i);
+  }
+  CudaExec::Buffer<float> d_tl, d_tr, d_mass, d_liquid_volume, d_volume, d_rl(pl.size()), d_rr(pr.size());
   CudaExec::upload(d_tl, tl);
   CudaExec::upload(d_tr, tr);
-  CudaExec::upload(d_density, density);
+  CudaExec::upload(d_mass, mass);
+  CudaExec::upload(d_liquid_volume, liquid_volume);
   CudaExec::upload(d_volume, volume);
-  CudaExec::upload(d_units, units);
-  const float m = 1000.0f * s * s * s;
 
-  auto liquid_of = [&](GridView v, const float* t, const MassUnits* w, const float* rho) {
-    return ThermalParticles::liquid(v, t, w, rho, m, 0.6f, 4186.0f);
+  auto liquid_of = [&](GridView v, const float* t, const float* mj, const float* vj) {
+    return ThermalParticles::liquid(v, t, mj, vj, 0.6f, 4186.0f);
   };
   auto rigid_of = [&](GridView v, const float* t, const float* vb) {
     return ThermalParticles::rigid(v, t, vb, 7850.0f, 50.0f, 490.0f);
   };
-  ThermalParticles dl = liquid_of(liquid.device_view(), CudaExec::ptr(d_tl), CudaExec::ptr(d_units),
-                                  CudaExec::ptr(d_density));
+  ThermalParticles dl = liquid_of(liquid.device_view(), CudaExec::ptr(d_tl), CudaExec::ptr(d_mass),
+                                  CudaExec::ptr(d_liquid_volume));
   ThermalParticles db = rigid_of(rigid.device_view(), CudaExec::ptr(d_tr), CudaExec::ptr(d_volume));
   exec.parallel_for(pl.size(), ComputeTemperatureRate{dl, db, true, kernel, CudaExec::ptr(d_rl)});
   exec.parallel_for(pr.size(), ComputeTemperatureRate{db, dl, true, kernel, CudaExec::ptr(d_rr)});
   exec.synchronize();
 
-  ThermalParticles hl = liquid_of(liquid.host_view(), tl.data(), units.data(), density.data());
+  ThermalParticles hl = liquid_of(liquid.host_view(), tl.data(), mass.data(), liquid_volume.data());
   ThermalParticles hb = rigid_of(rigid.host_view(), tr.data(), volume.data());
   std::vector<float> rl(pl.size()), rr(pr.size());
   ComputeTemperatureRate host_liquid{hl, hb, true, kernel, rl.data()}, host_rigid{hb, hl, true, kernel, rr.data()};

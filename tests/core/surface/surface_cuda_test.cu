@@ -78,10 +78,10 @@ TEST_F(surface_CudaAgreement, TexelTemperaturesAndWettingMatchTheHost) {
                                                      rigid_set.host_order.data(), first, count, kernel, host_weight.data()});
   on_host(texel.size(), InterpolateTexelTemperature{host_list, host_weight.data(), temperature.data(), host_T.data()});
   std::vector<float> host_wetting(texel.size(), 0.5f);
-  const float r2 = 2 * s * s;
+  const float contact = std::sqrt(2.0f) * s;
   std::vector<std::uint8_t> host_near(g.cell_count());
   on_host(host_near.size(), MarkCellsNearLiquid{liquid_set.host_view(), host_near.data()});
-  on_host(texel.size(), RecordWetting{liquid_set.host_view(), host_near.data(), texel.data(), normal.data(), r2, 0.9f,
+  on_host(texel.size(), RecordWetting{liquid_set.host_view(), host_near.data(), texel.data(), normal.data(), contact, 0.9f,
                                                host_wetting.data()});
 
   CudaExec::Buffer<Vec3> d_texel, d_normal;
@@ -103,7 +103,7 @@ TEST_F(surface_CudaAgreement, TexelTemperaturesAndWettingMatchTheHost) {
   CudaExec::Buffer<std::uint8_t> d_near(g.cell_count());
   gpu.parallel_for(g.cell_count(), MarkCellsNearLiquid{liquid_set.device_view(), CudaExec::ptr(d_near)});
   EXPECT_EQ(CudaExec::download(d_near), host_near);
-  gpu.parallel_for(texel.size(), RecordWetting{liquid_set.device_view(), CudaExec::ptr(d_near), CudaExec::ptr(d_texel), CudaExec::ptr(d_normal), r2, 0.9f,
+  gpu.parallel_for(texel.size(), RecordWetting{liquid_set.device_view(), CudaExec::ptr(d_near), CudaExec::ptr(d_texel), CudaExec::ptr(d_normal), contact, 0.9f,
                                                CudaExec::ptr(d_wetting)});
   gpu.synchronize();
   const std::vector<float> device_T = CudaExec::download(d_T), device_wetting = CudaExec::download(d_wetting);

@@ -37,7 +37,7 @@ void record(const CpuExec& exec, const LiquidGrid& liquid, const TexelGeometry& 
   const float r = kWettingContactSpacings * kSpacing;
   std::vector<std::uint8_t> near(liquid.grid.grid.cell_count());
   exec.parallel_for(near.size(), MarkCellsNearLiquid{liquid.view(), near.data()});
-  exec.parallel_for(g.size(), RecordWetting{liquid.view(), near.data(), g.position.data(), g.normal.data(), r * r, dry, wetting.data()});
+  exec.parallel_for(g.size(), RecordWetting{liquid.view(), near.data(), g.position.data(), g.normal.data(), r, dry, wetting.data()});
 }
 
 TEST(WettingHistory, AParticleWetsTheDiscUnderItOnTheFrontSideOnly) {
