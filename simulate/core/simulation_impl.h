@@ -516,9 +516,8 @@ class SimulationImpl final : public Simulation {
     exec_.parallel_for(n, IntegrateMotion{Exec::ptr(nonpressure_acc_), Exec::ptr(pressure_acc_), dt, Exec::ptr(liquid_.velocity),
                                           Exec::ptr(liquid_.position)});  // Alg. 1 line 2, for the next step
     exec_.parallel_for(n, ApplyXsph{liquid_pairs_.list, rigid_pairs_.list, Exec::ptr(liquid_.position), Exec::ptr(rigid_position_),
-                                    Exec::ptr(liquid_.units), Exec::ptr(density_), Exec::ptr(rigid_volume_),
-                                    Exec::ptr(liquid_.velocity), kernel_, particle_mass_, setup_.liquid.xsph_epsilon,
-                                    setup_.liquid.boundary_friction, Exec::ptr(velocity_tmp_)});
+                                    Exec::ptr(volume_), Exec::ptr(rigid_volume_), Exec::ptr(liquid_.velocity), kernel_,
+                                    setup_.liquid.xsph_epsilon, setup_.liquid.boundary_friction, Exec::ptr(velocity_tmp_)});
     liquid_.velocity.swap(velocity_tmp_);
     if (!running) exec_.parallel_for(n, DampVelocity{settling_damping_factor(setup_.settle.damping, dt), Exec::ptr(liquid_.velocity)});
     // The force condition bounds explicit forces. DFSPH's pressure is implicit

@@ -297,6 +297,7 @@ struct PairSumScene {
   ListedPairs liquid_pairs, rigid_pairs;
   std::vector<MassUnits> units;
   std::vector<float> density, volume, adhesion;
+  std::vector<float> liquid_mass, liquid_volume;  // of particles of 0.008 kg (ParticleMass, ParticleVolume)
   std::vector<Vec3> velocity, normal, moved;
 
   explicit PairSumScene(unsigned seed) {
@@ -324,6 +325,10 @@ struct PairSumScene {
       volume.push_back(1e-6f * (0.5f + unit(rng)));
       adhesion.push_back(5.0f + 10.0f * unit(rng));
     }
+    liquid_mass.resize(size());
+    liquid_volume.resize(size());
+    exec.parallel_for(size(), ParticleMass{units.data(), 0.008f, liquid_mass.data()});
+    exec.parallel_for(size(), ParticleVolume{liquid_mass.data(), density.data(), liquid_volume.data()});
   }
   std::size_t size() const { return liquid.sorted.size(); }
   std::size_t long_lists() const {
@@ -355,8 +360,8 @@ TEST(NeighbourLists, SplitXsphIsTheOneLoopSumBitForBit) {
   const PairSumScene s(29);
   ASSERT_GT(s.long_lists(), 100u);
   expect_whole_range_is_one_loop(std::vector<Vec3>(s.size()), [&](Vec3* smoothed) {
-    return ApplyXsph{s.liquid_pairs.list, s.rigid_pairs.list, s.moved.data(), s.rigid.sorted.data(), s.units.data(), s.density.data(),
-                     s.volume.data(), s.velocity.data(), s.kernel, 0.008f, 0.01f, 0.1f, smoothed};
+    return ApplyXsph{s.liquid_pairs.list, s.rigid_pairs.list, s.moved.data(), s.rigid.sorted.data(), s.liquid_volume.data(),
+                     s.volume.data(), s.velocity.data(), s.kernel, 0.01f, 0.1f, smoothed};
   });
 }
 

@@ -8,7 +8,6 @@
 
 #include "backend/host_device.h"
 #include "sph/kernel_cubic_spline.h"
-#include "sph/mass_units.h"
 #include "sph/neighbor_list.h"
 #include "sph/sum_in_list_order.h"
 #include "sph/uniform_grid.h"
@@ -20,12 +19,10 @@ struct ApplyXsph {
   NeighborList rigid_neighbors;
   const Vec3* position;
   const Vec3* rigid_position;
-  const MassUnits* units;
-  const float* density;
+  const float* volume;  // m_j / rho_j (ParticleVolume)
   const float* rigid_volume;
   const Vec3* velocity;  // before smoothing
   CubicSplineKernel kernel;
-  float particle_mass;
   float epsilon;           // between liquid particles
   float boundary_epsilon;  // against rigid particles
   Vec3* smoothed;          // after
@@ -74,10 +71,7 @@ struct ApplyXsph {
   }
 
  private:
-  DP_HD Vec3 liquid_term(std::uint32_t j, float w, Vec3 vi) const {
-    const float volume_j = particle_mass * weight_of(units[j]) / density[j];
-    return (epsilon * volume_j * w) * (velocity[j] - vi);
-  }
+  DP_HD Vec3 liquid_term(std::uint32_t j, float w, Vec3 vi) const { return (epsilon * volume[j] * w) * (velocity[j] - vi); }
   DP_HD Vec3 rigid_term(std::uint32_t b, float w, Vec3 vi) const { return (boundary_epsilon * rigid_volume[b] * w) * vi; }
 };
 
