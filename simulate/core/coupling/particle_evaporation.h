@@ -45,7 +45,8 @@ struct EvaporateParticles {
   // particle, T_i -= L dm / (m_i C). 0: off, as in the paper.
   float latent_heat_over_specific_heat = 0;  // L / C_i, K
 
-  DP_HD void operator()(std::size_t i) const {
+  // Always inlined, into the launcher's AVX2 copy too (docs/architecture.md).
+  DP_HD_INLINE void operator()(std::size_t i) const {
     const std::uint32_t* cell = pair_cell + kStencilSize * i;
     TexelMassUnits* eva = pair_eva + kStencilSize * i;
     float w[kStencilSize];

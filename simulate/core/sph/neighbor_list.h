@@ -221,8 +221,10 @@ struct ListedPairs {
 // the same order, and the same sums bit for bit.
 inline constexpr std::uint32_t kNotListed = 0xffffffffu;
 
+// Always inlined, as for_each_pair_gradient: out of line, with their
+// callers' lambdas, they ran as baseline code (docs/architecture.md).
 template <class F>
-DP_HD void for_each_pair(const GridView& set, const ListedPairs& pairs, std::size_t i, Vec3 xi, float h, const F& f) {
+DP_HD_INLINE void for_each_pair(const GridView& set, const ListedPairs& pairs, std::size_t i, Vec3 xi, float h, const F& f) {
   if (pairs.present()) {
     for (std::uint32_t k = pairs.list.offset[i]; k < pairs.list.offset[i + 1]; ++k) {
       const std::uint32_t j = pairs.list.index[k];
@@ -240,7 +242,7 @@ DP_HD void for_each_pair(const GridView& set, const ListedPairs& pairs, std::siz
 // for_each_pair with f(j, x_i - x_j, gradW_ij): the listed factor where
 // there is one.
 template <class F>
-DP_HD void for_each_pair_gradient(const GridView& set, const ListedPairs& pairs, std::size_t i, Vec3 xi,
+DP_HD_INLINE void for_each_pair_gradient(const GridView& set, const ListedPairs& pairs, std::size_t i, Vec3 xi,
                                   const CubicSplineKernel& kernel, const F& f) {
   for_each_pair(set, pairs, i, xi, kernel.h, [&](std::uint32_t j, Vec3 xij, std::uint32_t entry) {
     f(j, xij, entry != kNotListed ? pairs.gradient_factor[entry] * xij : kernel.gradW(xij));

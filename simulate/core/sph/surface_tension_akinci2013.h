@@ -127,7 +127,8 @@ struct ComputeSurfaceNormal {
   float particle_mass;      // m of a full particle, kg
   Vec3* normal;             // dimensionless
   ListedPairs pairs{};      // the step's liquid list, if any
-  DP_HD void operator()(std::size_t i) const {
+  // Always inlined, into the launcher's AVX2 copy too (docs/architecture.md).
+  DP_HD_INLINE void operator()(std::size_t i) const {
     Vec3 n{};
     for_each_pair_gradient(liquid, pairs, i, liquid.position[i], kernel, [&](std::uint32_t j, Vec3, Vec3 grad) {
       if (j != i) n += (particle_mass * weight_of(units[j]) / density[j]) * grad;

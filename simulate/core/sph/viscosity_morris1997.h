@@ -103,7 +103,8 @@ struct AddViscosityMorris1997 {
 
   // The wall's particle carries the liquid's density rho_i, so its
   // (mu_i + mu_b) / (rho_i rho_b) m_b is 2 nu V.
-  DP_HD Vec3 against_walls(std::size_t i) const {
+  // Always inlined, into the launcher's AVX2 copy too (docs/architecture.md).
+  DP_HD_INLINE Vec3 against_walls(std::size_t i) const {
     const Vec3 xi = liquid.position[i], vi = velocity[i];
     const float eta2 = morris_eta2(kernel);
     const bool wall_law = wall_shear == WallShear::Spalding1961;
