@@ -313,8 +313,8 @@ class SimulationImpl final : public Simulation {
   void resize_scratch(std::size_t n) {
     for (auto* b : {&position_tmp_, &velocity_tmp_, &predicted_, &nonpressure_acc_, &pressure_acc_, &normal_, &tension_acc_})
       b->resize(n);
-    for (auto* b : {&temperature_tmp_, &mass_, &volume_, &density_, &pressure_, &pressure_start_, &density_error_, &surface_area_, &liquid_rate_,
-                    &dfsph_factor_, &stiffness_, &divergence_pressure_})
+    for (auto* b : {&temperature_tmp_, &mass_, &volume_, &density_, &pressure_, &pressure_start_, &density_error_, &surface_area_,
+                    &liquid_rate_, &dfsph_factor_, &stiffness_, &divergence_pressure_})
       b->resize(n);
     id_tmp_.resize(n);
     units_tmp_.resize(n);

@@ -48,7 +48,7 @@ namespace dp {
 // step); a rigid particle's is its Akinci volume V_b, and its mass
 // rho_material V_b.
 struct ThermalParticles {
-  GridView grid;            // sorted positions
+  GridView grid;             // sorted positions
   const float* temperature;  // K (or any offset scale), sorted like the positions
   const float* volume;       // V_j, m^3
   const float* mass;         // liquid: m_j, kg; null for a rigid set

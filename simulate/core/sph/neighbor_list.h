@@ -243,7 +243,7 @@ DP_HD_INLINE void for_each_pair(const GridView& set, const ListedPairs& pairs, s
 // there is one.
 template <class F>
 DP_HD_INLINE void for_each_pair_gradient(const GridView& set, const ListedPairs& pairs, std::size_t i, Vec3 xi,
-                                  const CubicSplineKernel& kernel, const F& f) {
+                                         const CubicSplineKernel& kernel, const F& f) {
   for_each_pair(set, pairs, i, xi, kernel.h, [&](std::uint32_t j, Vec3 xij, std::uint32_t entry) {
     f(j, xij, entry != kNotListed ? pairs.gradient_factor[entry] * xij : kernel.gradW(xij));
   });
@@ -254,7 +254,7 @@ template <class Exec>
 struct NeighborListBuffers {
   typename Exec::template Buffer<std::uint32_t> count, offset, index;
   typename Exec::template Buffer<float> gradient_factor;  // build_with_gradients only
-  ListChunks chunks_;                                     // the CPU's one-walk fill (FillListChunks)
+  ListChunks chunks;                                      // the CPU's one-walk fill (FillListChunks)
 
   NeighborList build(const Exec& exec, const typename Exec::template Buffer<Vec3>& query, const GridView& set,
                      float radius) {
@@ -274,8 +274,8 @@ struct NeighborListBuffers {
     const std::size_t n = query.size();
     count.resize(n + 1);
     if constexpr (Exec::kBuffersInHostMemory) {
-      chunks_.resize(n);
-      exec.parallel_for(n, FillListChunks{Exec::ptr(query), set, r2, kernel, with_gradients, n, Exec::ptr(count), &chunks_});
+      chunks.resize(n);
+      exec.parallel_for(n, FillListChunks{Exec::ptr(query), set, r2, kernel, with_gradients, n, Exec::ptr(count), &chunks});
     } else {
       exec.parallel_for(n, CountNeighbors{Exec::ptr(query), set, r2, Exec::ptr(count)});
     }
@@ -286,7 +286,7 @@ struct NeighborListBuffers {
     if (with_gradients) gradient_factor.resize(total);
     float* factor = with_gradients ? Exec::ptr(gradient_factor) : nullptr;
     if constexpr (Exec::kBuffersInHostMemory) {
-      exec.parallel_for(n, CopyListChunks{&chunks_, Exec::ptr(offset), Exec::ptr(index), factor});
+      exec.parallel_for(n, CopyListChunks{&chunks, Exec::ptr(offset), Exec::ptr(index), factor});
     } else {
       exec.parallel_for(n, FillNeighbors{Exec::ptr(query), set, r2, Exec::ptr(offset), Exec::ptr(index), kernel, factor});
     }

@@ -50,13 +50,13 @@ struct RecordWetting {
   float* wetting;
   const std::uint32_t* near_slot = nullptr;  // per texel, its cell's entry in `near` (null: the cell's key)
 
-  // Only the cells within the contact radius are visited (it is below the
-  // cell size h: about 8 in place of 27). A row of cells is tested whole, its particles' tests
-  // or-ed without a branch (the loop vectorises), and the rows after the
-  // first touching one are skipped: a branch per particle was mispredicted
-  // at random.
   DP_HD float contact_radius2() const { return contact_radius < 0.0f ? -1.0f : contact_radius * contact_radius; }
 
+  // Only the cells within the contact radius are visited (it is below the
+  // cell size h: about 8 cells in place of 27). A row of cells is tested
+  // whole, its particles' tests or-ed without a branch (the loop
+  // vectorises), and the rows after the first touching one are skipped: a
+  // branch per particle was mispredicted at random.
   DP_HD void operator()(std::size_t t) const {
     const Vec3 xt = texel_position[t], nt = texel_normal[t];
     bool touched = false;
