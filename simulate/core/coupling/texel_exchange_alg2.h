@@ -165,8 +165,8 @@ struct EstimateTexelExchange {
   // The rest of texel x's (at position t) estimate, from its stencil's
   // weights (wsum 0: none, or nothing to move); kUnitSum: wsum is 1.
   template <bool kUnitSum>
-  DP_HD_INLINE void exchange(std::size_t t, std::uint32_t x, TexelMassUnits m, TexelMassUnits room, bool may_condense, const std::uint32_t* cell,
-                      const float* w, float wsum) const {
+  DP_HD_INLINE void exchange(std::size_t t, std::uint32_t x, TexelMassUnits m, TexelMassUnits room, bool may_condense,
+                             const std::uint32_t* cell, const float* w, float wsum) const {
     // Eq. 16 (> 0) or Eq. 17 (< 0) times dt: at most one side is non-zero.
     const double kg = wsum > 0 ? signed_exchange_kg<kUnitSum>(t, x, cell, w, wsum, m > 0, may_condense) : 0.0;
     // The pairs' shares, each rounded down, then w_t^eva or w_t^cond.
@@ -195,8 +195,8 @@ struct EstimateTexelExchange {
   // Texel x's (at position t) Eq. 16 rate (positive) or minus its Eq. 17
   // rate, times dt, kg; 0 when the side the pressures pick cannot move water.
   template <bool kUnitSum>
-  DP_HD_INLINE double signed_exchange_kg(std::size_t t, std::uint32_t x, const std::uint32_t* cell, const float* w, float wsum, bool has_water,
-                                  bool may_condense) const {
+  DP_HD_INLINE double signed_exchange_kg(std::size_t t, std::uint32_t x, const std::uint32_t* cell, const float* w, float wsum,
+                                         bool has_water, bool may_condense) const {
     const AirAtSurfel a = air_at_stencil<kUnitSum>(air, cell, w, wsum);
     const double p_sat = saturation.at(t, texel.temperature[x]);        // Eq. 11
     const double p_c = vapor_pressure(a.vapor_density, a.temperature);  // Eq. 10

@@ -59,6 +59,7 @@ struct RecordWetting {
   // branch per particle was mispredicted at random.
   DP_HD void operator()(std::size_t t) const {
     const Vec3 xt = texel_position[t], nt = texel_normal[t];
+    const float r2 = contact_radius2();
     bool touched = false;
     if (near[near_slot ? near_slot[t] : liquid.grid.key_of(xt)])
       liquid.for_each_run_within(xt, contact_radius, [&](std::uint32_t first, std::uint32_t end) {
@@ -66,7 +67,7 @@ struct RecordWetting {
         unsigned any = 0;
         for (std::uint32_t i = first; i < end; ++i) {
           const Vec3 d = liquid.position[i] - xt;
-          any |= static_cast<unsigned>(length_squared(d) < contact_radius2()) & static_cast<unsigned>(dot(d, nt) >= 0.0f);
+          any |= static_cast<unsigned>(length_squared(d) < r2) & static_cast<unsigned>(dot(d, nt) >= 0.0f);
         }
         touched = any != 0;
       });
