@@ -7,6 +7,7 @@
 #include <cstring>
 #include <random>
 
+#include "backend/counting_sort.h"
 #include "backend/cpu_exec.h"
 #include "sph/particle_grid.h"
 #include "sph/density.h"
@@ -116,6 +117,47 @@ TEST(CpuBackend, SortIsStableAndScanIsExclusive) {
   EXPECT_EQ(values, (std::vector<std::uint32_t>{5, 1, 3, 2, 0, 4}));
   exec.exclusive_scan(keys, out);
   EXPECT_EQ(out, (std::vector<std::uint32_t>{0, 0, 1, 2, 4, 7}));
+}
+
+// The CPU sorts the cells' pairs by counting (CellPairIndex::build). Its
+// order, runs and cells must be the standard library's stable sort, for
+// any number of shares: keys clustered as a liquid's stencils are, keys at
+// 0 and at the bound's last cell, one key, none, and a share count above
+// the thread count. The reused counts must start from zero every time.
+TEST(CpuBackend, CountingSortIsTheStableSortWithItsRuns) {
+  std::mt19937 rng(23);
+  const std::uint32_t bound = 64 * 64 * 64;
+  std::vector<std::vector<std::uint32_t>> inputs = {{}, {bound - 1}, {5, 5, 5}, {0, bound - 1, 0, 7, bound - 1}};
+  std::normal_distribution<float> cluster(30000.0f, 800.0f);
+  std::uniform_int_distribution<std::uint32_t> anywhere(0, bound - 1);
+  for (std::size_t n : {1000u, 150000u}) {
+    std::vector<std::uint32_t> k(n);
+    for (std::size_t q = 0; q < n; ++q) k[q] = q % 9 == 0 ? anywhere(rng) : static_cast<std::uint32_t>(std::max(0.0f, cluster(rng)));
+    inputs.push_back(k);
+  }
+  CountingSort sort;  // one sorter for every input, as a CellPairIndex keeps its own
+  for (const std::vector<std::uint32_t>& key : inputs)
+    for (int shares : {1, 2, 3, 7}) {
+      const std::size_t n = key.size();
+      std::vector<std::uint32_t> expected_order(n);
+      for (std::size_t q = 0; q < n; ++q) expected_order[q] = static_cast<std::uint32_t>(q);
+      std::stable_sort(expected_order.begin(), expected_order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+      std::vector<std::uint32_t> expected_key, expected_run_key, expected_run_begin;
+      for (std::size_t q = 0; q < n; ++q) {
+        expected_key.push_back(key[expected_order[q]]);
+        if (q == 0 || expected_key[q] != expected_key[q - 1]) {
+          expected_run_key.push_back(expected_key[q]);
+          expected_run_begin.push_back(static_cast<std::uint32_t>(q));
+        }
+      }
+      expected_run_begin.push_back(static_cast<std::uint32_t>(n));
+      std::vector<std::uint32_t> sorted(n), order(n), run_key, run_begin;
+      sort.sort(shares, key.data(), n, bound, sorted.data(), order.data(), run_key, run_begin);
+      ASSERT_EQ(order, expected_order) << n << " keys, " << shares << " shares";
+      ASSERT_EQ(sorted, expected_key) << n << " keys, " << shares << " shares";
+      ASSERT_EQ(run_key, expected_run_key) << n << " keys, " << shares << " shares";
+      ASSERT_EQ(run_begin, expected_run_begin) << n << " keys, " << shares << " shares";
+    }
 }
 
 TEST(CpuBackend, BlockedSumMatchesLongDoubleReference) {

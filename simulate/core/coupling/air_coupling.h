@@ -160,7 +160,7 @@ class AirCoupling {
       pair_heat.resize(pairs);
       pair_eva.resize(pairs);
       if (size > 0) exec.parallel_for(size, ComputeStencils{g, Exec::ptr(position), Exec::ptr(pair_cell), Exec::ptr(pair_alpha)});
-      cells.build(exec, pair_cell);
+      cells.build(exec, pair_cell, static_cast<std::uint32_t>(g.cell_count()));
     }
     CellPairs cell_pairs() const {
       if (size == 0) return CellPairs{nullptr, nullptr, nullptr};

@@ -42,7 +42,7 @@ class TexelVaporExchange {
     condensing_.resize(texels_);
     saturation_kelvin_.assign(texels_, std::numeric_limits<float>::quiet_NaN());
     saturation_pressure_.resize(texels_);
-    cells_.build(exec, pair_cell_);
+    cells_.build(exec, pair_cell_, static_cast<std::uint32_t>(grid.cell_count()));
     cells_.build_stretches(exec);
     for (auto* b : {&cond_num_, &cond_den_}) b->resize(grid.cell_count());
     net_units_.resize(cells_.active_cells());
