@@ -22,6 +22,7 @@
 #include "sph/surface_area_orthmann2013.h"
 #include "sph/surface_tension_akinci2013.h"
 #include "sph/time_step.h"
+#include "sph/transposed_list.h"
 #include "sph/viscosity_morris1997.h"
 #include "sph/viscosity_xsph.h"
 #include "surface/surface_textures.h"
@@ -385,8 +386,10 @@ class SimulationImpl final : public Simulation {
     // updates: the exchange between the sets stays antisymmetric.
     exec_.parallel_for(n, ComputeTemperatureRate{liquid_set, rigid_set, m > 0, kernel_, Exec::ptr(liquid_rate_), liquid_pairs_,
                                                  rigid_pairs_});
-    exec_.parallel_for(m, ComputeTemperatureRate{rigid_set, liquid_set, n > 0, kernel_, Exec::ptr(rigid_rate_),
-                                                 rigid_rigid_pairs_});
+    ComputeTemperatureRate rigid_rate{rigid_set, liquid_set, n > 0, kernel_, Exec::ptr(rigid_rate_), rigid_rigid_pairs_};
+    if constexpr (Exec::kBuffersInHostMemory)  // the liquid near each rigid particle, from the liquid's rigid lists
+      if (rigid_pairs_.present()) rigid_rate.other_near = liquid_near_rigid_.build(rigid_pairs_.list, n, m);
+    exec_.parallel_for(m, rigid_rate);
     exec_.parallel_for(n, IntegrateTemperature{Exec::ptr(liquid_rate_), nullptr, dt, Exec::ptr(liquid_.temperature)});
     exec_.parallel_for(m, IntegrateTemperature{Exec::ptr(rigid_rate_), Exec::ptr(rigid_held_), dt, Exec::ptr(rigid_temperature_)});
   }
@@ -859,6 +862,7 @@ class SimulationImpl final : public Simulation {
   NeighborListBuffers<Exec> liquid_neighbors_, rigid_neighbors_;
   ListedPairs liquid_pairs_{}, rigid_pairs_{};  // of the liquid particles, with the pairs' gradient factors
   NeighborListBuffers<Exec> rigid_rigid_neighbors_;  // static, built once
+  TransposedList liquid_near_rigid_;                  // CPU: rigid_pairs_ from the rigid side, for conduction
   ListedPairs rigid_rigid_pairs_{};
   AdaptivityParameters adaptivity_params_;
   Buffer<Vec3> position_tmp_, velocity_tmp_, predicted_, nonpressure_acc_, pressure_acc_;

@@ -86,6 +86,10 @@ struct ComputeTemperatureRate {
   CubicSplineKernel kernel;
   float* rate;
   ListedPairs self_pairs{}, other_pairs{};  // the step's lists for i, if any
+  // The CPU's other set around i where other_pairs has no list: the same
+  // particles in the same order as a walk of its grid (a TransposedList).
+  // Null: walked (gather_near).
+  NeighborList other_near{nullptr, nullptr};
 
   static constexpr std::uint32_t kNobody = 0xffffffffu;
 
@@ -126,8 +130,8 @@ struct ComputeTemperatureRate {
     for (std::size_t i = begin; i < end; ++i) {
       const float ti = self.temperature[i];
       float exchange = 0.0f;
-      if (!exchange_in_list_order(self, self_pairs, i, ti, static_cast<std::uint32_t>(i), exchange) ||
-          (with_other && !exchange_in_list_order(other, other_pairs, i, ti, kNobody, exchange))) {
+      if (!exchange_in_list_order(self, self_pairs, NeighborList{nullptr, nullptr}, i, ti, static_cast<std::uint32_t>(i), exchange) ||
+          (with_other && !exchange_in_list_order(other, other_pairs, other_near, i, ti, kNobody, exchange))) {
         (*this)(i);
         continue;
       }
@@ -137,9 +141,10 @@ struct ComputeTemperatureRate {
 
  private:
   // exchange += k_ij sum_j ..., as exchange_with adds it; false where the
-  // neighbours do not fit the terms' arrays.
-  DP_HOST_INLINE bool exchange_in_list_order(const ThermalParticles& set, const ListedPairs& pairs, std::size_t i,
-                                             float ti, std::uint32_t skip, float& exchange) const {
+  // neighbours do not fit the terms' arrays. Without a list in `pairs`,
+  // the neighbours are `near_list`'s or, where it is null, walked.
+  DP_HOST_INLINE bool exchange_in_list_order(const ThermalParticles& set, const ListedPairs& pairs, const NeighborList& near_list,
+                                             std::size_t i, float ti, std::uint32_t skip, float& exchange) const {
     const Vec3 xi = self.grid.position[i];
     const auto term = [&](std::uint32_t j, Vec3 xij, Vec3 grad) {
       const float r2 = length_squared(xij);
@@ -155,8 +160,15 @@ struct ComputeTemperatureRate {
         return term(j, xij, pairs.gradient_factor[first + k] * xij);
       });
     } else {
-      std::uint32_t near[kMaxTermsInOrder + kNearBlock];
-      const std::uint32_t count = gather_near(set.grid, xi, kernel.h * kernel.h, near, kMaxTermsInOrder);
+      std::uint32_t walked[kMaxTermsInOrder + kNearBlock];
+      const std::uint32_t* near = walked;
+      std::uint32_t count;
+      if (near_list.offset) {
+        near = near_list.index + near_list.offset[i];
+        count = near_list.offset[i + 1] - near_list.offset[i];
+      } else {
+        count = gather_near(set.grid, xi, kernel.h * kernel.h, walked, kMaxTermsInOrder);
+      }
       if (count > kMaxTermsInOrder) return false;
       sum = sum_in_list_order(0.0f, count, [&](std::uint32_t k) {
         const std::uint32_t j = near[k];

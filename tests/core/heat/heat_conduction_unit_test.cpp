@@ -14,6 +14,7 @@
 #include "sph/neighbor_list.h"
 #include "sph/sum_in_list_order.h"
 #include "sph/surface_tension_akinci2013.h"
+#include "sph/transposed_list.h"
 
 namespace dp {
 namespace {
@@ -131,11 +132,14 @@ TEST(heat_NeighbourLists, ListedPairsGiveTheGridWalksRatesAndNormalsBitForBit) {
 }
 
 // On the CPU, ComputeTemperatureRate::whole_range computes each list's
-// terms first and adds them in the list's order, and walks the grid for the
-// liquid around a rigid particle with gather_near; the GPU runs the
-// functor's one loop. Both must give the same bits, for listed and walked
-// neighbours, and for lists too long for the terms' arrays. A sum added out
-// of the list's order, or a pair gathered out of the walk's, fails here.
+// terms first and adds them in the list's order, and takes the liquid
+// around a rigid particle from the liquid's rigid lists seen from the rigid
+// side (TransposedList) or walks the grid for it with gather_near; the GPU
+// runs the functor's one loop. All must give the same bits, for listed,
+// transposed and walked neighbours, and for lists too long for the terms'
+// arrays. A sum added out of the list's order, or a pair gathered out of
+// the walk's, fails here; so does a transposed list that differs from the
+// walk's pairs, which is also compared with gather_near itself.
 TEST(heat_NeighbourLists, SumsInListOrderAreTheOneLoopSumsBitForBit) {
   CpuExec exec(2);
   MixedScene scene(exec, 400);
@@ -153,11 +157,26 @@ TEST(heat_NeighbourLists, SumsInListOrderAreTheOneLoopSumsBitForBit) {
   const auto one_loop = [](std::size_t count, const ComputeTemperatureRate& rate) {
     for (std::size_t i = 0; i < count; ++i) rate(i);
   };
-  for (bool listed : {false, true}) {
+  TransposedList transposed;
+  const NeighborList liquid_near_rigid = transposed.build(lr.list, n, m);
+  const GridView liquid_grid = scene.liquid.view();
+  for (std::size_t k = 0; k < m; ++k) {
+    const Vec3 xk = scene.rigid.position[k];
+    std::vector<std::uint32_t> walked;  // as gather_near takes them, also past its capacity
+    liquid_grid.for_each_near(xk, [&](std::uint32_t j) {
+      if (length_squared(xk - liquid_grid.position[j]) < scene.kernel.h * scene.kernel.h) walked.push_back(j);
+    });
+    const std::vector<std::uint32_t> listed(liquid_near_rigid.index + liquid_near_rigid.offset[k],
+                                            liquid_near_rigid.index + liquid_near_rigid.offset[k + 1]);
+    ASSERT_EQ(listed, walked) << "rigid particle " << k;
+  }
+  for (int mode : {0, 1, 2}) {  // walked, listed, listed with the rigid side's liquid transposed
+    const bool listed = mode > 0;
     std::vector<float> split(n), single(n), rigid_split(m), rigid_single(m);
     const ListedPairs none{};
     const ComputeTemperatureRate liquid_rate{l, b, true, scene.kernel, split.data(), listed ? ll : none, listed ? lr : none};
-    const ComputeTemperatureRate rigid_rate{b, l, true, scene.kernel, rigid_split.data(), listed ? rr : none};
+    ComputeTemperatureRate rigid_rate{b, l, true, scene.kernel, rigid_split.data(), listed ? rr : none};
+    if (mode == 2) rigid_rate.other_near = liquid_near_rigid;
     exec.parallel_for(n, liquid_rate);
     exec.parallel_for(m, rigid_rate);
     ComputeTemperatureRate liquid_single = liquid_rate, rigid_single_rate = rigid_rate;
@@ -165,8 +184,8 @@ TEST(heat_NeighbourLists, SumsInListOrderAreTheOneLoopSumsBitForBit) {
     rigid_single_rate.rate = rigid_single.data();
     one_loop(n, liquid_single);
     one_loop(m, rigid_single_rate);
-    EXPECT_TRUE(bitwise_equal(split, single)) << (listed ? "listed" : "walked") << ", liquid";
-    EXPECT_TRUE(bitwise_equal(rigid_split, rigid_single)) << (listed ? "listed" : "walked") << ", rigid";
+    EXPECT_TRUE(bitwise_equal(split, single)) << "mode " << mode << ", liquid";
+    EXPECT_TRUE(bitwise_equal(rigid_split, rigid_single)) << "mode " << mode << ", rigid";
   }
 }
 
