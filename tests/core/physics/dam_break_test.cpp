@@ -70,7 +70,7 @@ struct Shape {
   double front, column;
 };
 
-// The shapes at the given times (ascending, s).
+// The shapes at the given times (s, in any order), one run passing each.
 std::vector<Shape> collapse(const Flume& f, PressureSolverMethod method, Walls walls, const std::vector<double>& times) {
   const float s = static_cast<float>(f.width / f.across);
   const float gap = 1.2f * s;  // liquid to wall, see hydrostatic_test.cpp
@@ -100,9 +100,13 @@ std::vector<Shape> collapse(const Flume& f, PressureSolverMethod method, Walls w
   // The liquid's boundary lies half a spacing outside its outer particles'
   // centres: at the back wall and on the floor, gap - s/2 from the wall.
   const double boundary = gap - 0.5 * s;
-  std::vector<Shape> shapes;
+  std::vector<std::size_t> by_time(times.size());
+  for (std::size_t k = 0; k < by_time.size(); ++k) by_time[k] = k;
+  std::stable_sort(by_time.begin(), by_time.end(), [&](std::size_t p, std::size_t q) { return times[p] < times[q]; });
+  std::vector<Shape> shapes(times.size());
   std::int64_t steps = 0;
-  for (double t : times) {
+  for (std::size_t k : by_time) {
+    const double t = times[k];
     sim->advance_to(t, [&](const StepReport&) { ++steps; });
     ParticleSnapshot p = sim->particles();
     float front = 0, column = 0;
@@ -113,7 +117,7 @@ std::vector<Shape> collapse(const Flume& f, PressureSolverMethod method, Walls w
       outside += x.x <= 0 || x.x >= lx || x.y <= 0 || x.z <= 0 || x.z >= lz;
     }
     EXPECT_EQ(outside, 0) << "particles through a wall at t = " << t << " s";
-    shapes.push_back(Shape{(front + 0.5 * s - boundary) / f.width, (column + 0.5 * s - boundary) / f.width});
+    shapes[k] = Shape{(front + 0.5 * s - boundary) / f.width, (column + 0.5 * s - boundary) / f.width};
   }
   ::testing::Test::RecordProperty("steps", std::to_string(steps));
   return shapes;
@@ -190,14 +194,7 @@ TEST_P(WallLawCollapse, FrontSpeedAndResidualColumnFollowMartinMoyce1952) {
   const Flume f = martin_moyce_flume(GetParam().across, GetParam().depth);
   std::vector<double> times = front_times(f);
   for (const ColumnSample& c : kMartinMoyceColumn) times.push_back(c.tau * std::sqrt(f.width / 9.81));
-  std::vector<std::size_t> by_time(times.size());
-  for (std::size_t k = 0; k < by_time.size(); ++k) by_time[k] = k;
-  std::stable_sort(by_time.begin(), by_time.end(), [&](std::size_t p, std::size_t q) { return times[p] < times[q]; });
-  std::vector<double> sorted_times;
-  for (std::size_t k : by_time) sorted_times.push_back(times[k]);
-  const std::vector<Shape> sorted_shapes = collapse(f, PressureSolverMethod::Pcisph, Walls::WallLaw, sorted_times);
-  std::vector<Shape> shapes(times.size());
-  for (std::size_t k = 0; k < by_time.size(); ++k) shapes[by_time[k]] = sorted_shapes[k];
+  const std::vector<Shape> shapes = collapse(f, PressureSolverMethod::Pcisph, Walls::WallLaw, times);
 
   const std::size_t fronts = std::size(kMartinMoyce);
   std::vector<double> Z, experiment;
