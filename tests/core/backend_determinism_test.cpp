@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <string>
+
+#include <omp.h>
 
 #include "backend/counting_sort.h"
 #include "backend/cpu_exec.h"
@@ -158,6 +161,42 @@ TEST(CpuBackend, CountingSortIsTheStableSortWithItsRuns) {
       ASSERT_EQ(run_key, expected_run_key) << n << " keys, " << shares << " shares";
       ASSERT_EQ(run_begin, expected_run_begin) << n << " keys, " << shares << " shares";
     }
+}
+
+// parallel_for_by_work: every element once, whatever the work, and each
+// thread's contiguous share within one element of an equal part of it.
+TEST(CpuBackend, WorkSharesVisitEveryElementOnceAndHoldEqualWork) {
+  std::mt19937 rng(29);
+  std::vector<std::vector<std::size_t>> works = {{}, {5000}, std::vector<std::size_t>(3000, 1), std::vector<std::size_t>(100, 0)};
+  std::vector<std::size_t> head(2000, 0), tail(2000, 0), random(5000);
+  for (std::size_t i = 0; i < 20; ++i) head[i] = 4000;                 // heavy first elements, then none
+  for (std::size_t i = 1980; i < 2000; ++i) tail[i] = 4000;            // none, then heavy ones
+  for (std::size_t& w : random) w = rng() % 7 == 0 ? rng() % 3000 : rng() % 4;
+  works.insert(works.end(), {head, tail, random});
+  for (const std::vector<std::size_t>& work : works) {
+    std::vector<std::size_t> before(work.size() + 1, 0);
+    for (std::size_t i = 0; i < work.size(); ++i) before[i + 1] = before[i] + work[i];
+    const std::size_t largest = work.empty() ? 0 : *std::max_element(work.begin(), work.end());
+    for (int threads : {1, 2, 3, 7}) {
+      CpuExec exec(threads);
+      std::vector<int> visits(work.size(), 0), thread(work.size(), -1);
+      exec.parallel_for_by_work(work.size(), [&](std::size_t i) { return before[i]; }, [&](std::size_t i) {
+        ++visits[i];
+        thread[i] = omp_get_thread_num();
+      });
+      const std::string what = std::to_string(work.size()) + " elements, work " + std::to_string(before.back()) + ", " +
+                               std::to_string(threads) + " threads";
+      for (std::size_t i = 0; i < work.size(); ++i) ASSERT_EQ(visits[i], 1) << "element " << i << ", " << what;
+      std::vector<std::size_t> share_work(threads, 0);
+      for (std::size_t i = 0; i < work.size(); ++i) {
+        if (i > 0) ASSERT_GE(thread[i], thread[i - 1]) << "shares are contiguous, " << what;
+        share_work[static_cast<std::size_t>(thread[i])] += work[i];
+      }
+      if (before.back() < CpuExec::kSerialBelow) continue;  // on the calling thread
+      for (int t = 0; t < threads; ++t)
+        EXPECT_LE(share_work[t], before.back() / threads + largest) << "thread " << t << ", " << what;
+    }
+  }
 }
 
 TEST(CpuBackend, BlockedSumMatchesLongDoubleReference) {

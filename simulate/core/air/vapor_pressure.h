@@ -26,10 +26,13 @@ DP_HD inline double vapor_pressure(double vapor_density, double kelvin) {
   return vapor_density * kWaterVaporGasConstant * kelvin;
 }
 
+// Eq. 10 inverted: the vapor density (kg/m^3) at pressure `pascal` in air at `kelvin`.
+DP_HD inline double vapor_density_at_pressure(double pascal, double kelvin) { return pascal / (kWaterVaporGasConstant * kelvin); }
+
 // The vapor density (kg/m^3) of air at `kelvin` with relative humidity
 // `rh` in [0, 1]: rh p_sat / (R_w T).
 DP_HD inline double vapor_density_at_humidity(double rh, double kelvin) {
-  return rh * saturation_pressure_at_kelvin(kelvin) / (kWaterVaporGasConstant * kelvin);
+  return vapor_density_at_pressure(rh * saturation_pressure_at_kelvin(kelvin), kelvin);
 }
 
 }  // namespace dp

@@ -343,6 +343,13 @@ class CudaExec {
     cuda_detail::check(cudaGetLastError(), "kernel launch");
   }
 
+  // CpuExec balances its threads' shares by work; here each element has its
+  // own thread anyway.
+  template <class W, class F>
+  void parallel_for_by_work(std::size_t n, const W&, const F& f) const {
+    parallel_for(n, f);
+  }
+
   // Calls f(i, j, k) for every point of an nx x ny x nz box, one thread per
   // point in a 3-D grid of blocks (x fastest, as CpuExec's rows).
   template <class F>

@@ -163,6 +163,12 @@ struct PairStretches {
   const std::uint32_t* begin;       // per stretch, + 1: its first entry in cell order
 };
 
+// The pairs of the runs before run r, for parallel_for_by_work.
+struct PairsBeforeRun {
+  PairStretches pairs;
+  std::size_t operator()(std::size_t r) const { return pairs.begin[pairs.run_first[r]]; }
+};
+
 // A stretch starts at a cell's first pair and wherever the next pair of the
 // same cell is not the one after the last.
 struct StretchStarts {

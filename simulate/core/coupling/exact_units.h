@@ -42,6 +42,34 @@ DP_HD inline TexelMassUnits scale_units(TexelMassUnits x, TexelMassUnits num, Te
 #endif
 }
 
+// scale_units for many x and one num / den: the quotient estimated in
+// double precision, then made exact with two 128-bit products. Below 2^51
+// the estimate is off by less than 0.4 (three roundings of 2^-53 each), so
+// it truncates to the floor or next to it, and one compare corrects it;
+// above, it divides. The same units as scale_units, without a division per
+// pair (a cell scales up to thousands of its pairs' condensation).
+class UnitScale {
+ public:
+  DP_HD UnitScale(TexelMassUnits num, TexelMassUnits den)
+      : num_(num), den_(den), ratio_(den > 0 ? static_cast<double>(num) / static_cast<double>(den) : 1.0) {}
+
+  DP_HD TexelMassUnits operator()(TexelMassUnits x) const {
+    if (den_ == 0 || num_ >= den_) return x;
+    const double estimate = static_cast<double>(x) * ratio_;
+    if (!(estimate < 0x1p51)) return scale_units(x, num_, den_);
+    __extension__ typedef unsigned __int128 Wide;
+    const TexelMassUnits q = static_cast<TexelMassUnits>(static_cast<std::int64_t>(estimate));
+    const Wide product = static_cast<Wide>(x) * num_, below = static_cast<Wide>(q) * den_;
+    if (below > product) return q - 1;
+    if (product - below >= den_) return q + 1;
+    return q;
+  }
+
+ private:
+  TexelMassUnits num_, den_;
+  double ratio_;
+};
+
 // Signed units split in two halves that a double-accumulating sum adds
 // exactly (each block and total below 2^53): the low 24 bits and the rest.
 struct SignedUnitsLow {

@@ -215,87 +215,103 @@ DP_HD inline TexelMassUnits cell_vapor_units(double density, double cell_volume,
   return transfer_units_of_kg(density * cell_volume, kg_per_unit);
 }
 
-// Alg. 2 lines 15-17: w_c^cond = min((m_c - sum_t eva) / sum_t cond, 1),
+// Alg. 2 lines 15-17: w_c^cond = min((m_c - m_c^sat - sum_t eva) / sum_t cond, 1),
 // kept as the fraction num / den (num <= den), clamped at 0. The paper's
 // numerator subtracts the cell's incoming evaporation; taken as written it
 // keeps a margin (the cell ends with at least twice that evaporation).
+//
+// m_c^sat, the cell's vapor at the saturation pressure of its warmest
+// condensing texel, is ours (docs/paper-map.md, departures): Eq. 17 is
+// explicit in p_c, so a step whose condensation exceeds the cell's excess
+// over saturation carries the cell past equilibrium, and the paper's floor
+// (m_c >= 0) lets it empty the cell. With phase change sped up (the mirror's
+// x7700) that happened every other step: the cells in front of a 4 degC
+// mirror were emptied, the wet mirror then evaporated into them, and so on.
+// Condensation stops at saturation instead, as the rate law says it does;
+// where a step condenses less than the excess (physical rates) nothing changes.
+//
 // Then lines 21-23 for the cell: its net gain, evaporation in minus its
-// pairs' condensation scaled by w_c^cond, the same amounts UpdateTexelMass
-// gives the texels. The cell reads its pairs by stretches of consecutive
-// pairs (CellPairIndex::build_stretches).
+// pairs' condensation scaled by w_c^cond. The scaled amounts are written
+// back into the pairs (computed once), for UpdateTexelMass to give the
+// texels. The cell reads its pairs by stretches of consecutive pairs
+// (CellPairIndex::build_stretches); pair q is texel position q mod texels.
 struct BalanceCellCondensation {
   const std::uint32_t* cell;  // the runs' cells
   PairStretches pairs;
-  const PairFlow* pair_flow;
-  const double* vapor;  // kg/m^3
+  PairFlow* pair_flow;
+  std::size_t texels;
+  const double* saturation_pressure;  // per texel position, this step's (SaturationPressureCache)
+  AirCellsView air;
   double cell_volume;
   double kg_per_unit;
-  TexelMassUnits* cond_num;  // per grid cell
-  TexelMassUnits* cond_den;  // per grid cell
-  std::int64_t* net_units;   // per run
-  double* vapor_kg;          // per grid cell
+  std::int64_t* net_units;  // per run
+  double* vapor_kg;         // per grid cell
 
   DP_HD void operator()(std::size_t r) const {
     const std::uint32_t c = cell[r];
-    // sum eva - sum cond over the pairs, and whether any pair condenses;
-    // only then sum cond on its own (unsigned sums wrap alike in any order,
-    // so e = flow + d exactly).
-    TexelMassUnits flow = 0;
-    PairFlow any = 0;
+    // sum eva - sum cond over the pairs, sum cond, and the warmest
+    // condensing texel's p_sat (unsigned sums wrap alike in any order, so
+    // e = flow + d exactly).
+    TexelMassUnits flow = 0, d = 0;
+    double p_sat = 0;
     for (std::uint32_t s = pairs.run_first[r]; s < pairs.run_first[r + 1]; ++s) {
-      const PairFlow* f = pair_flow + pairs.first_pair[s];
-      for (std::uint32_t i = 0, n = pairs.begin[s + 1] - pairs.begin[s]; i < n; ++i) {
+      const std::uint32_t q = pairs.first_pair[s];
+      const PairFlow* f = pair_flow + q;
+      std::size_t t = q % texels;
+      for (std::uint32_t i = 0, n = pairs.begin[s + 1] - pairs.begin[s]; i < n; ++i, t = t + 1 == texels ? 0 : t + 1) {
         flow += static_cast<TexelMassUnits>(f[i]);
-        any |= f[i];
+        if (f[i] >= 0) continue;
+        d += condensation_of(f[i]);
+        p_sat = p_sat > saturation_pressure[t] ? p_sat : saturation_pressure[t];
       }
     }
-    TexelMassUnits d = 0;
-    if (any < 0)
-      for (std::uint32_t s = pairs.run_first[r]; s < pairs.run_first[r + 1]; ++s) {
-        const PairFlow* f = pair_flow + pairs.first_pair[s];
-        for (std::uint32_t i = 0, n = pairs.begin[s + 1] - pairs.begin[s]; i < n; ++i) d += condensation_of(f[i]);
-      }
     const TexelMassUnits e = flow + d;
-    const TexelMassUnits m = cell_vapor_units(vapor[c], cell_volume, kg_per_unit);
-    const TexelMassUnits avail = m > e ? m - e : 0;
-    const TexelMassUnits num = avail < d ? avail : d;
-    cond_num[c] = num;
-    cond_den[c] = d;
-    TexelMassUnits out = 0;
-    if (d > 0)
-      for (std::uint32_t s = pairs.run_first[r]; s < pairs.run_first[r + 1]; ++s) {
-        const PairFlow* f = pair_flow + pairs.first_pair[s];
-        for (std::uint32_t i = 0, n = pairs.begin[s + 1] - pairs.begin[s]; i < n; ++i) out += scale_units(condensation_of(f[i]), num, d);
-      }
+    TexelMassUnits out = d;
+    if (d > 0) {
+      const double kelvin = static_cast<double>(air.ambient_temperature) + static_cast<double>(air.temperature_excess[c]);
+      const TexelMassUnits m = cell_vapor_units(air.vapor[c], cell_volume, kg_per_unit);
+      const TexelMassUnits m_sat = cell_vapor_units(vapor_density_at_pressure(p_sat, kelvin), cell_volume, kg_per_unit);
+      const TexelMassUnits keep = e + m_sat;  // no overflow: both below 2^63
+      const TexelMassUnits avail = m > keep ? m - keep : 0;
+      if (avail < d) out = scale_cell_condensation(r, avail, d);
+    }
     const std::int64_t net = static_cast<std::int64_t>(e) - static_cast<std::int64_t>(out);
     net_units[r] = net;
     vapor_kg[c] = static_cast<double>(net) * kg_per_unit;
   }
+
+  // Each condensing pair's units times num / den, rounded down, written back;
+  // returns their sum (at most num: the sum of floors).
+  DP_HD TexelMassUnits scale_cell_condensation(std::size_t r, TexelMassUnits num, TexelMassUnits den) const {
+    const UnitScale scale(num, den);
+    TexelMassUnits out = 0;
+    for (std::uint32_t s = pairs.run_first[r]; s < pairs.run_first[r + 1]; ++s) {
+      PairFlow* f = pair_flow + pairs.first_pair[s];
+      for (std::uint32_t i = 0, n = pairs.begin[s + 1] - pairs.begin[s]; i < n; ++i) {
+        if (f[i] >= 0) continue;
+        const TexelMassUnits scaled = scale(condensation_of(f[i]));
+        f[i] = -static_cast<PairFlow>(scaled);
+        out += scaled;
+      }
+    }
+    return out;
+  }
 };
 
 // Alg. 2 lines 18-20 for a condensing texel: m_t += sum_c cond w_c^cond,
-// with the cell's w_c^cond from BalanceCellCondensation (it has no
-// evaporation: EstimateTexelExchange).
+// the amounts BalanceCellCondensation scaled (it has no evaporation:
+// EstimateTexelExchange).
 struct UpdateTexelMass {
-  const std::uint32_t* order;      // position -> texel
-  const std::uint32_t* pair_cell;  // corner-major
-  std::size_t count;               // texels
+  const std::uint32_t* order;  // position -> texel
+  std::size_t count;           // texels
   const PairFlow* pair_flow;
   const std::uint8_t* condensing;
-  const TexelMassUnits* cond_num;
-  const TexelMassUnits* cond_den;
   TexelMassUnits* mass;
 
   DP_HD void operator()(std::size_t t) const {
     if (!condensing[t]) return;
     TexelMassUnits gain = 0;
-    for (int k = 0; k < kStencilSize; ++k) {
-      const std::size_t q = corner_major_pair(t, k, count);
-      const TexelMassUnits cond = condensation_of(pair_flow[q]);
-      if (cond == 0) continue;
-      const std::uint32_t c = pair_cell[q];
-      gain += scale_units(cond, cond_num[c], cond_den[c]);
-    }
+    for (int k = 0; k < kStencilSize; ++k) gain += condensation_of(pair_flow[corner_major_pair(t, k, count)]);
     mass[order[t]] += gain;  // m_t + gain <= max(m_t, m_t^max) by the balance
   }
 };

@@ -44,7 +44,6 @@ class TexelVaporExchange {
     saturation_pressure_.resize(texels_);
     cells_.build(exec, pair_cell_, static_cast<std::uint32_t>(grid.cell_count()));
     cells_.build_stretches(exec);
-    for (auto* b : {&cond_num_, &cond_den_}) b->resize(grid.cell_count());
     net_units_.resize(cells_.active_cells());
     // Written only at the active cells, which never change: the rest stays 0.
     vapor_kg_.assign(grid.cell_count(), 0.0);
@@ -66,11 +65,10 @@ class TexelVaporExchange {
     exec.parallel_for(texels_, EstimateTexelExchange{texel, Exec::ptr(order_), view, cell_velocity, Exec::ptr(pair_cell_),
                                                      Exec::ptr(pair_alpha_), texels_, p, saturation, Exec::ptr(pair_flow_),
                                                      Exec::ptr(condensing_)});
-    exec.parallel_for(active, BalanceCellCondensation{cells_.cell(), cells_.stretches(), Exec::ptr(pair_flow_), view.vapor,
-                                                      static_cast<double>(g.cell_volume()), p.kg_per_unit, Exec::ptr(cond_num_),
-                                                      Exec::ptr(cond_den_), Exec::ptr(net_units_), Exec::ptr(vapor_kg_)});
-    exec.parallel_for(texels_, UpdateTexelMass{Exec::ptr(order_), Exec::ptr(pair_cell_), texels_, Exec::ptr(pair_flow_),
-                                               Exec::ptr(condensing_), Exec::ptr(cond_num_), Exec::ptr(cond_den_), texel.mass});
+    exec.parallel_for_by_work(active, PairsBeforeRun{cells_.stretches()}, BalanceCellCondensation{cells_.cell(), cells_.stretches(), Exec::ptr(pair_flow_), texels_,
+                                                      Exec::ptr(saturation_pressure_), view, static_cast<double>(g.cell_volume()),
+                                                      p.kg_per_unit, Exec::ptr(net_units_), Exec::ptr(vapor_kg_)});
+    exec.parallel_for(texels_, UpdateTexelMass{Exec::ptr(order_), texels_, Exec::ptr(pair_flow_), Exec::ptr(condensing_), texel.mass});
     air.add_vapor_at(exec, cells_.cell(), active, Exec::ptr(vapor_kg_));
     return exact_units_sum(exec, active, Exec::ptr(net_units_));
   }
@@ -97,7 +95,6 @@ class TexelVaporExchange {
   Buffer<std::uint8_t> condensing_;  // per texel
   Buffer<float> saturation_kelvin_;  // SaturationPressureCache
   Buffer<double> saturation_pressure_;
-  Buffer<TexelMassUnits> cond_num_, cond_den_;
   Buffer<std::int64_t> net_units_;  // per active cell
   Buffer<double> vapor_kg_;         // per grid cell
   CellPairIndex<Exec> cells_;

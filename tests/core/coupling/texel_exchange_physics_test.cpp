@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "texel_box.h"
 
@@ -73,6 +74,44 @@ TEST(coupling_Alg2Physics, ColdMirrorFogsOnlyWhereMaxMassAllows) {
   const double gained = b.texel_kg();
   EXPECT_GT(gained, 0);
   EXPECT_NEAR(vapor0 - b.air.vapor_mass(b.exec), gained, 1e-9 * vapor0);
+}
+
+// A cold wet plate far below the dew point, with the rate sped up 10^4
+// times so that one step's Eq. 17 would take several times the vapor its
+// cells hold: condensation must stop where the rate law says it stops, at
+// the plate's saturation pressure (Magnus at 4 degC, Eq. 10 at the air's
+// 20 degC), and the plate, below the dew point, must never evaporate.
+// Alg. 2's floor at m_c >= 0 alone empties the cells, and the wet plate
+// then evaporates into them on the next step.
+TEST(coupling_Alg2Physics, FastCondensationStopsAtThePlatesSaturationAndNeverEvaporates) {
+  AirSettings s = still_box();
+  s.ambient_vapor = vapor_density_at_humidity(0.8, 293.15);  // dew point 16.4 degC
+  test::TexelBox b(1, s);
+  const float plate = 277.15f;
+  b.add_lattice(10, 0.004f, 0.04f, 0.02f, 0.02f, plate, 2e-9, 1e-6);
+  b.params.coefficients.a *= 1e4;
+  b.params.coefficients.b *= 1e4;
+  b.prepare();
+  const double saturated = vapor_density_at_pressure(saturation_pressure_at_kelvin(plate), 293.15);
+  const double demand = b.params.coefficients.a * 0.004 * 0.004 *
+                        (vapor_pressure(s.ambient_vapor, 293.15) - saturation_pressure_at_kelvin(plate)) * 0.01;
+  const double cell_excess = (s.ambient_vapor - saturated) * std::pow(0.01, 3);
+  ASSERT_GT(demand * 8, 4 * cell_excess) << "the test needs a rate that outruns the cells";
+  const test::WideUnits water0 = test::water_units(b);
+  double lowest = s.ambient_vapor;
+  for (int step = 0; step < 40; ++step) {
+    const std::vector<TexelMassUnits> before = b.mass;
+    b.step(0.01f);
+    for (std::size_t t = 0; t < b.mass.size(); ++t) ASSERT_GE(b.mass[t], before[t]) << "texel " << t << " evaporated at step " << step;
+    const AirSnapshot a = b.air.snapshot();
+    for (std::size_t c = 0; c < a.vapor.size(); ++c)
+      if (a.kind[c] == kAirCell) lowest = std::fmin(lowest, a.vapor[c]);
+  }
+  RecordProperty("lowest_over_saturated", std::to_string(lowest / saturated));
+  EXPECT_GE(lowest, saturated * (1 - 1e-9));     // never past equilibrium
+  EXPECT_LT(lowest, saturated * 1.02);           // and the cells in front reach it
+  EXPECT_GT(b.texel_kg(), 100 * 2e-9);           // the plate gained water
+  EXPECT_TRUE(test::water_units(b) == water0);
 }
 
 struct AirState {

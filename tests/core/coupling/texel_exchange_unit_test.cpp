@@ -106,22 +106,30 @@ std::uint64_t floor_of_scaled_by_bits(std::uint64_t x, std::uint64_t num, std::u
 }
 
 // w_t and w_c scale a transfer to floor(x num / den), num < den; at or
-// above 1 (and for den 0) the transfer stays as it is.
+// above 1 (and for den 0) the transfer stays as it is. UnitScale, the cells'
+// way for many x, gives the same units.
 TEST(coupling_ExactUnits, ScaledUnitsAreTheFloorOfTheExactQuotient) {
   const std::uint64_t top = static_cast<std::uint64_t>(kMaxTransferUnits);
   std::mt19937_64 rng(3);
   std::vector<std::uint64_t> values{0, 1, 2, 3, 255, 256, (1ull << 32) - 1, 1ull << 32, top - 1, top};
   for (int n = 0; n < 20; ++n) values.push_back(rng() % top);
   for (int n = 0; n < 20; ++n) values.push_back(rng() % 4096);
+  // Around 2^51, where UnitScale stops estimating, and quotients near whole numbers.
+  for (std::uint64_t v : {(1ull << 51) - 1, 1ull << 51, (1ull << 51) + 1, (1ull << 53) + 1, 3ull << 50}) values.push_back(v);
+  for (int n = 0; n < 10; ++n) values.push_back((rng() % (1ull << 40)) * 3);
   int checked = 0;
   for (std::uint64_t x : values)
     for (std::uint64_t num : values)
       for (std::uint64_t den : values) {
+        const UnitScale scale(num, den);
         if (den == 0 || num >= den) {
           ASSERT_EQ(scale_units(x, num, den), x);
+          ASSERT_EQ(scale(x), x);
           continue;
         }
-        ASSERT_EQ(scale_units(x, num, den), floor_of_scaled_by_bits(x, num, den)) << x << " * " << num << " / " << den;
+        const std::uint64_t floor = floor_of_scaled_by_bits(x, num, den);
+        ASSERT_EQ(scale_units(x, num, den), floor) << x << " * " << num << " / " << den;
+        ASSERT_EQ(scale(x), floor) << "UnitScale: " << x << " * " << num << " / " << den;
         ++checked;
       }
   EXPECT_GT(checked, 50000);
