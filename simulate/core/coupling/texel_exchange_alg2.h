@@ -271,8 +271,7 @@ struct BalanceCellCondensation {
       const double kelvin = static_cast<double>(air.ambient_temperature) + static_cast<double>(air.temperature_excess[c]);
       const TexelMassUnits m = cell_vapor_units(air.vapor[c], cell_volume, kg_per_unit);
       const TexelMassUnits m_sat = cell_vapor_units(vapor_density_at_pressure(p_sat, kelvin), cell_volume, kg_per_unit);
-      const TexelMassUnits keep = e + m_sat;  // no overflow: both below 2^63
-      const TexelMassUnits avail = m > keep ? m - keep : 0;
+      const TexelMassUnits avail = m > e && m - e > m_sat ? m - e - m_sat : 0;  // m - e - m_sat, clamped at 0 without overflow
       if (avail < d) out = scale_cell_condensation(r, avail, d);
     }
     const std::int64_t net = static_cast<std::int64_t>(e) - static_cast<std::int64_t>(out);
