@@ -65,7 +65,8 @@ class TexelVaporExchange {
     exec.parallel_for(texels_, EstimateTexelExchange{texel, Exec::ptr(order_), view, cell_velocity, Exec::ptr(pair_cell_),
                                                      Exec::ptr(pair_alpha_), texels_, p, saturation, Exec::ptr(pair_flow_),
                                                      Exec::ptr(condensing_)});
-    exec.parallel_for_by_work(active, PairsBeforeRun{cells_.stretches()}, BalanceCellCondensation{cells_.cell(), cells_.stretches(), Exec::ptr(pair_flow_), texels_,
+    exec.parallel_for_by_work(active, PairsBeforeRun{cells_.stretches()},
+                              BalanceCellCondensation{cells_.cell(), cells_.stretches(), Exec::ptr(pair_flow_), texels_,
                                                       Exec::ptr(saturation_pressure_), view, static_cast<double>(g.cell_volume()),
                                                       p.kg_per_unit, Exec::ptr(net_units_), Exec::ptr(vapor_kg_)});
     exec.parallel_for(texels_, UpdateTexelMass{Exec::ptr(order_), texels_, Exec::ptr(pair_flow_), Exec::ptr(condensing_), texel.mass});

@@ -102,7 +102,8 @@ TEST(coupling_Alg2Physics, FastCondensationStopsAtThePlatesSaturationAndNeverEva
   for (int step = 0; step < 40; ++step) {
     const std::vector<TexelMassUnits> before = b.mass;
     b.step(0.01f);
-    for (std::size_t t = 0; t < b.mass.size(); ++t) ASSERT_GE(b.mass[t], before[t]) << "texel " << t << " evaporated at step " << step;
+    for (std::size_t t = 0; t < b.mass.size(); ++t)
+      ASSERT_GE(b.mass[t], before[t]) << "texel " << t << " evaporated at step " << step;
     const AirSnapshot a = b.air.snapshot();
     for (std::size_t c = 0; c < a.vapor.size(); ++c)
       if (a.kind[c] == kAirCell) lowest = std::fmin(lowest, a.vapor[c]);
