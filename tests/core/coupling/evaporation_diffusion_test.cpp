@@ -236,13 +236,7 @@ TEST(coupling_StillAirEvaporation, OpenColumnSettlesAtTheDiffusionLimitedRate) {
 // decays with l^2 / (pi^2 D) = 0.4 s: measured between 3 and 4 s. Emptied
 // every other step instead, the cells had let the cold plate evaporate.
 TEST(coupling_StillAirCondensation, FastCondensationSettlesAtTheDiffusionLimitedRate) {
-  OpenColumnCase cold;
-  cold.plate_kelvin = 277.15f;
-  cold.humidity = 0.8;
-  cold.rate_factor = 1e4;
-  cold.from = 3;
-  cold.to = 4;
-  expect_the_diffusion_limited_rate(cold);
+  expect_the_diffusion_limited_rate(OpenColumnCase{.plate_kelvin = 277.15f, .humidity = 0.8, .rate_factor = 1e4, .from = 3, .to = 4});
 }
 
 }  // namespace
