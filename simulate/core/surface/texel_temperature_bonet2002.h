@@ -67,11 +67,21 @@ struct InterpolateTexelTemperature {
   }
 };
 
-// a[i] != b[i] (NaN differs from everything): has a temperature changed?
-struct FloatsDiffer {
-  const float* a;
-  const float* b;
-  DP_HD bool operator()(std::size_t i) const { return a[i] != b[i]; }
+// value[index[i]] != seen[i] (NaN differs from everything): has a
+// temperature changed since it was seen?
+struct DifferentAt {
+  const float* value;
+  const std::uint32_t* index;
+  const float* seen;
+  DP_HD bool operator()(std::size_t i) const { return value[index[i]] != seen[i]; }
+};
+
+// seen[i] = value[index[i]].
+struct GatherAt {
+  const float* value;
+  const std::uint32_t* index;
+  float* seen;
+  DP_HD void operator()(std::size_t i) const { seen[i] = value[index[i]]; }
 };
 
 }  // namespace dp

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sph/kernel_cubic_spline.h"
 #include "surface_scenes.h"
 
 namespace dp {
@@ -99,6 +100,48 @@ TEST(TexelTemperature, OnlyTheTexelsOwnRigidCounts) {
   auto sim = make_simulation(ExecutionConfig{Device::Cpu, 2}, run.setup);
   const SurfaceSnapshot s = sim->surfaces().at(0);
   for (std::size_t t = 0; t < s.size(); ++t) ASSERT_NEAR(s.temperature[t], 280.0f, kRounding * 280.0f);
+}
+
+TEST(TexelTemperature, TexelsFollowTheirRigidWhileItWarmsBesideAHeldOne) {
+  // The textured plate conducts heat from a second plate held at 400 K one
+  // spacing above it. The texels must follow their own plate every step,
+  // though the held plate, also within their reach, never changes; the
+  // reference is Eq. 7 summed here over the own plate's particles.
+  TexelGeometry texels = test::lattice_texels(21, kSpacing, 0.0f);
+  PlateRun run(texels);
+  run.setup.heat_conduction = true;
+  const std::size_t own = run.setup.rigid_position.size();
+  for (const Vec3& x : test::plate_particles(kSide, kSpacing, kSpacing)) run.setup.rigid_position.push_back(x);
+  run.setup.rigid_temperature.assign(own, 280.0f);
+  run.setup.rigid_temperature.resize(run.setup.rigid_position.size(), 400.0f);
+  run.setup.rigid_held.assign(own, 0);
+  run.setup.rigid_held.resize(run.setup.rigid_position.size(), 1);
+  auto sim = make_simulation(ExecutionConfig{Device::Cpu, 2}, run.setup);
+  const CubicSplineKernel kernel = CubicSplineKernel::with_support(run.setup.support_radius());
+  const std::vector<Vec3> x = sim->rigid_particles();  // sorted, the same order as the next two
+  const std::vector<float> volume = sim->rigid_volumes();
+  double previous_mean = 280.0;
+  for (int step = 0; step < 3; ++step) {
+    sim->step();
+    const std::vector<float> T = sim->rigid_temperatures();
+    const SurfaceSnapshot s = sim->surfaces().at(0);
+    double mean = 0;
+    for (std::size_t t = 0; t < s.size(); ++t) {
+      double sum = 0, weights = 0;
+      for (std::size_t k = 0; k < x.size(); ++k) {
+        if (x[k].y > 0.5f * kSpacing) continue;  // the held plate: another rigid
+        const double w = static_cast<double>(volume[k]) * kernel.W(length(texels.position[t] - x[k]));
+        sum += w * T[k];
+        weights += w;
+      }
+      ASSERT_GT(weights, 0.0);
+      ASSERT_NEAR(s.temperature[t], sum / weights, kRounding * 400.0f) << "texel " << t << ", step " << step;
+      mean += s.temperature[t];
+    }
+    mean /= static_cast<double>(s.size());
+    EXPECT_GT(mean, previous_mean + 1e-3) << "step " << step << ": the plate did not warm";
+    previous_mean = mean;
+  }
 }
 
 TEST(TexelTemperature, TexelsOutOfReachKeepTheirInitialTemperature) {
