@@ -115,6 +115,50 @@ TEST(coupling_Alg2Physics, FastCondensationStopsAtThePlatesSaturationAndNeverEva
   EXPECT_TRUE(test::water_units(b) == water0);
 }
 
+// The same fast condensation onto a plate in stripes from 1 to 8.2 degC:
+// a cell that texels of several temperatures condense into stops at the
+// saturation of the warmest of them (the colder ones alone could take it
+// lower), and no cell goes below it. Only Alg. 2 runs, so each cell holds
+// what its own texels left it.
+TEST(coupling_Alg2Physics, EachCellStopsAtItsWarmestCondensingTexelsSaturation) {
+  AirSettings s = still_box();
+  s.ambient_vapor = vapor_density_at_humidity(0.8, 293.15);  // dew point 16.4 degC
+  test::TexelBox b(2, s);
+  b.add_lattice(10, 0.004f, 0.04f, 0.02f, 0.02f, 0.0f, 2e-9, 1e-6);
+  for (std::size_t t = 0; t < b.temperature.size(); ++t) b.temperature[t] = 274.15f + 0.8f * static_cast<float>(t % 10);
+  b.params.coefficients.a *= 1e4;
+  b.params.coefficients.b *= 1e4;
+  b.prepare();
+  const MacGrid& g = b.air.grid();
+  std::vector<float> warmest(g.cell_count(), 0.0f);  // K; 0: no texel's stencil holds the cell
+  for (std::size_t t = 0; t < b.position.size(); ++t) {
+    std::uint32_t cell[kStencilSize];
+    float alpha[kStencilSize];
+    trilinear_stencil(g, b.position[t], cell, alpha);
+    for (int k = 0; k < kStencilSize; ++k)
+      if (alpha[k] > 0) warmest[cell[k]] = std::fmax(warmest[cell[k]], b.temperature[t]);
+  }
+  const test::WideUnits water0 = test::water_units(b);
+  double lowest = 1e9;  // of a cell's vapor over its warmest texel's saturation
+  int cells = 0;
+  for (int step = 0; step < 40; ++step) {
+    b.exchange_step(0.01f);
+    const AirSnapshot a = b.air.snapshot();
+    cells = 0;
+    for (std::size_t c = 0; c < a.vapor.size(); ++c) {
+      if (warmest[c] == 0 || a.kind[c] != kAirCell) continue;
+      const double saturated = vapor_density_at_pressure(saturation_pressure_at_kelvin(warmest[c]), a.temperature[c]);
+      ASSERT_GE(a.vapor[c], saturated * (1 - 1e-6)) << "cell " << c << " below its warmest texel's saturation at step " << step;
+      lowest = std::fmin(lowest, a.vapor[c] / saturated);
+      ++cells;
+    }
+  }
+  RecordProperty("lowest_over_saturated", std::to_string(lowest));
+  EXPECT_GE(cells, 8);
+  EXPECT_LT(lowest, 1.02);  // the cells reach it
+  EXPECT_TRUE(test::water_units(b) == water0);
+}
+
 struct AirState {
   const char* name;
   double celsius, humidity;
