@@ -16,6 +16,17 @@
 #define DP_HD_INLINE __attribute__((always_inline)) inline
 #endif
 
+// Asks the cache for *p ahead of its use, where a kernel reads through a
+// permutation the hardware prefetcher cannot follow. Nothing on the GPU,
+// whose threads hide memory latency by their number.
+DP_HD_INLINE void prefetch(const void* p) {
+#if !defined(__CUDA_ARCH__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
 // The same for host-only functions the CPU launcher calls per group of
 // points (four_along_x): inlined into its loops, they are compiled with
 // each loop's instruction set (cpu_isa.h) instead of the baseline's alone.
