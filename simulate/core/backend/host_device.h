@@ -19,6 +19,7 @@
 // Asks the cache for *p ahead of its use, where a kernel reads through a
 // permutation the hardware prefetcher cannot follow. Nothing on the GPU,
 // whose threads hide memory latency by their number.
+namespace dp {
 DP_HD_INLINE void prefetch(const void* p) {
 #if !defined(__CUDA_ARCH__)
   __builtin_prefetch(p);
@@ -26,6 +27,7 @@ DP_HD_INLINE void prefetch(const void* p) {
   (void)p;
 #endif
 }
+}  // namespace dp
 
 // The same for host-only functions the CPU launcher calls per group of
 // points (four_along_x): inlined into its loops, they are compiled with

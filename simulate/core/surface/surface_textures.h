@@ -82,7 +82,7 @@ class SurfaceTextures {
                                                         static_cast<std::uint32_t>(s.rigid_first),
                                                         static_cast<std::uint32_t>(s.rigid_count), kernel_,
                                                         Exec::ptr(tex.rigid_weight)});
-      tex.own_particle = own_particles(rigid_order, s.rigid_first, s.rigid_count);
+      tex.own_particle = own_particles(rigid_order, static_cast<std::uint32_t>(s.rigid_first), static_cast<std::uint32_t>(s.rigid_count));
     }
     interpolate_temperatures(exec, rigid_temperature);
   }
@@ -201,12 +201,12 @@ class SurfaceTextures {
 
   // The sorted indices i whose setup index rigid_order[i] lies in
   // [first, first + count), ascending.
-  static Buffer<std::uint32_t> own_particles(const Buffer<std::uint32_t>& rigid_order, std::size_t first, std::size_t count) {
+  static Buffer<std::uint32_t> own_particles(const Buffer<std::uint32_t>& rigid_order, std::uint32_t first, std::uint32_t count) {
     const std::vector<std::uint32_t> order = Exec::download(rigid_order);
     std::vector<std::uint32_t> own;
     own.reserve(count);
     for (std::size_t i = 0; i < order.size(); ++i)
-      if (order[i] - first < count) own.push_back(static_cast<std::uint32_t>(i));  // unsigned wrap rejects below
+      if (of_rigid(order[i], first, count)) own.push_back(static_cast<std::uint32_t>(i));
     Buffer<std::uint32_t> out;
     Exec::upload(out, own);
     return out;

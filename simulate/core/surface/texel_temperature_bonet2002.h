@@ -21,6 +21,10 @@
 
 namespace dp {
 
+// Is the particle of setup index `source` one of the rigid's particles
+// [first, first + count)? (The unsigned difference wraps for those below.)
+DP_HD_INLINE bool of_rigid(std::uint32_t source, std::uint32_t first, std::uint32_t count) { return source - first < count; }
+
 // Once: the weights V_k W-bar_tk of Eq. 7 for every entry of a texel's
 // neighbour list (0 for particles of another rigid). Each texel writes only
 // its own slice of the list.
@@ -35,7 +39,7 @@ struct ComputeTexelWeights {
   float* weight;                       // per neighbour-list entry
 
   DP_HD float volume_weight(const Vec3& xt, std::uint32_t k) const {
-    if (rigid_source[k] - rigid_first >= rigid_count) return 0.0f;  // another rigid (unsigned wrap rejects below)
+    if (!of_rigid(rigid_source[k], rigid_first, rigid_count)) return 0.0f;
     return rigid_volume[k] * kernel.W(length(xt - rigid_position[k]));
   }
 
